@@ -1,0 +1,96 @@
+#pragma once
+// What a contact law must provide, checked with messages that name the gap.
+//
+//   struct MyLaw {
+//     struct params_type { ... };   // trivially copyable, per material pair
+//     struct state_type  { ... };   // trivially copyable, per contact; {} = fresh
+//     KOKKOS_INLINE_FUNCTION static ContactForce
+//       force(const params_type&, state_type&, const ContactGeometry&);
+//     KOKKOS_INLINE_FUNCTION static double stiffness(const params_type&);  // for the time step
+//   };
+//
+// Optional: `static bool bonded(const state_type&)` (a bonded contact is kept,
+// and evaluated, while its disks are apart) and `static void bond(state_type&)`
+// (called for every touching pair by Simulation::bond_touching_contacts).
+#include <vrut/contact/geometry.hpp>
+
+#include <type_traits>
+#include <utility>
+
+namespace vrut {
+namespace detail {
+
+template <class, class = void> struct has_params_type : std::false_type {};
+template <class L> struct has_params_type<L, std::void_t<typename L::params_type>> : std::true_type {};
+template <class, class = void> struct has_state_type : std::false_type {};
+template <class L> struct has_state_type<L, std::void_t<typename L::state_type>> : std::true_type {};
+
+template <class, class = void> struct has_force : std::false_type {};
+template <class L>
+struct has_force<L, std::void_t<decltype(L::force(std::declval<const typename L::params_type&>(),
+                                                  std::declval<typename L::state_type&>(),
+                                                  std::declval<const ContactGeometry&>()))>>
+    : std::is_convertible<decltype(L::force(std::declval<const typename L::params_type&>(),
+                                            std::declval<typename L::state_type&>(),
+                                            std::declval<const ContactGeometry&>())),
+                          ContactForce> {};
+
+template <class, class = void> struct has_stiffness : std::false_type {};
+template <class L>
+struct has_stiffness<L, std::void_t<decltype(L::stiffness(std::declval<const typename L::params_type&>()))>>
+    : std::is_convertible<decltype(L::stiffness(std::declval<const typename L::params_type&>())), double> {};
+
+template <class, class = void> struct has_bonded : std::false_type {};
+template <class L>
+struct has_bonded<L, std::void_t<decltype(L::bonded(std::declval<const typename L::state_type&>()))>>
+    : std::true_type {};
+template <class, class = void> struct has_bond : std::false_type {};
+template <class L>
+struct has_bond<L, std::void_t<decltype(L::bond(std::declval<typename L::state_type&>()))>> : std::true_type {};
+
+template <class L, bool = has_params_type<L>::value && has_state_type<L>::value>
+struct law_members_ok : std::false_type {};
+template <class L>
+struct law_members_ok<L, true>
+    : std::bool_constant<has_force<L>::value && has_stiffness<L>::value &&
+                         std::is_trivially_copyable<typename L::params_type>::value &&
+                         std::is_trivially_copyable<typename L::state_type>::value> {};
+
+}  // namespace detail
+
+// Fails the build with one message per missing piece. Use it where a law
+// enters a template: `static_assert(check_contact_law<Law>())`.
+template <class Law>
+constexpr bool check_contact_law() {
+  static_assert(detail::has_params_type<Law>::value,
+                "vrut contact law: missing member type 'params_type' (per material pair parameters)");
+  static_assert(detail::has_state_type<Law>::value,
+                "vrut contact law: missing member type 'state_type' (per-contact history; an empty struct if none)");
+  if constexpr (detail::has_params_type<Law>::value && detail::has_state_type<Law>::value) {
+    static_assert(detail::has_force<Law>::value,
+                  "vrut contact law: missing 'static ContactForce force(const params_type&, state_type&, "
+                  "const ContactGeometry&)'");
+    static_assert(detail::has_stiffness<Law>::value,
+                  "vrut contact law: missing 'static double stiffness(const params_type&)' (used for the "
+                  "critical time step)");
+    static_assert(std::is_trivially_copyable<typename Law::params_type>::value,
+                  "vrut contact law: 'params_type' must be trivially copyable (it is copied to the device)");
+    static_assert(std::is_trivially_copyable<typename Law::state_type>::value,
+                  "vrut contact law: 'state_type' must be trivially copyable (it lives in a Kokkos::View)");
+  }
+  return detail::law_members_ok<Law>::value;
+}
+
+// Bond queries that work for every law, bonded or not.
+template <class Law>
+KOKKOS_INLINE_FUNCTION bool is_bonded(const typename Law::state_type& s) {
+  if constexpr (detail::has_bonded<Law>::value) return Law::bonded(s);
+  else { (void)s; return false; }
+}
+template <class Law>
+KOKKOS_INLINE_FUNCTION void make_bonded(typename Law::state_type& s) {
+  if constexpr (detail::has_bond<Law>::value) Law::bond(s);
+  else (void)s;
+}
+
+}  // namespace vrut

@@ -1,0 +1,263 @@
+#pragma once
+// Disk-disk contact list: for each disk i the partners j > i within
+// r_i + r_j + skin, found with a cell list (O(N)), plus the per-contact law
+// state, which survives rebuilds (matched by partner), and a reverse list so
+// every disk can sum its contact forces without atomics, in a fixed order.
+// That fixed order makes runs bitwise identical across backends and thread counts.
+#include <vrut/contact/concept.hpp>
+#include <vrut/core/particles.hpp>
+
+#include <Kokkos_Core.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace vrut {
+
+// Force of one contact on its second disk, and the moments on both.
+struct ContactLoad {
+  Vec2 force;
+  double moment_first = 0.0, moment_second = 0.0;
+};
+
+template <class Law, class ExecutionSpace>
+class ContactList {
+ public:
+  using execution_space = ExecutionSpace;
+  using memory_space = typename ExecutionSpace::memory_space;
+  using state_type = typename Law::state_type;
+
+  Kokkos::View<int**, memory_space> partner;  // (disk, slot) -> partner j > disk
+  Kokkos::View<int*, memory_space> count;
+  Kokkos::View<state_type**, memory_space> state;
+  Kokkos::View<ContactLoad**, memory_space> load;
+  Kokkos::View<int**, memory_space> reverse;  // (disk, slot) -> contact id i*capacity+k with disk as j
+  Kokkos::View<int*, memory_space> reverse_count;
+  Kokkos::View<Vec2*, memory_space> position_at_build;
+  int capacity = 0, reverse_capacity = 0;
+  long builds = 0;
+
+  // Rebuilds from the current positions. Pairs that are bonded in the old
+  // list are kept whatever their distance, with their state.
+  void rebuild(const execution_space& space, const Particles<memory_space>& ps, double skin) {
+    const int n = static_cast<int>(ps.size());
+    if (capacity == 0) capacity = 8;
+    if (reverse_capacity == 0) reverse_capacity = 8;
+    if (count.extent(0) != static_cast<std::size_t>(n)) {  // first build
+      partner = decltype(partner)("partner", n, capacity);
+      count = decltype(count)("count", n);
+      state = decltype(state)("contact_state", n, capacity);
+    }
+    build_cells(space, ps, skin);
+    for (;;) {
+      const int needed = fill(space, ps, skin);
+      if (needed <= capacity) break;
+      capacity = needed + 4;
+    }
+    for (;;) {
+      const int needed = fill_reverse(space, n);
+      if (needed <= reverse_capacity) break;
+      reverse_capacity = needed + 4;
+    }
+    position_at_build = Kokkos::View<Vec2*, memory_space>("position_at_build", n);
+    Kokkos::deep_copy(space, position_at_build, ps.position);
+    ++builds;
+  }
+
+  // Largest displacement since the last build; a rebuild is due past skin / 2.
+  double max_displacement(const execution_space& space, const Particles<memory_space>& ps) const {
+    auto x = ps.position;
+    auto x0 = position_at_build;
+    double m = 0.0;
+    Kokkos::parallel_reduce(
+        "vrut::max_displacement", Kokkos::RangePolicy<execution_space>(space, 0, ps.size()),
+        KOKKOS_LAMBDA(const int i, double& acc) {
+          const double d = norm(x(i) - x0(i));
+          if (d > acc) acc = d;
+        },
+        Kokkos::Max<double>(m));
+    return m;
+  }
+
+  // Cells, public only because device lambdas cannot live in private members.
+  Kokkos::View<int*, memory_space> cell_of, cell_start, cell_particles;
+  int cells_x = 0, cells_y = 0;
+  double cell_size = 0.0, origin_x = 0.0, origin_y = 0.0;
+
+  void build_cells(const execution_space& space, const Particles<memory_space>& ps, double skin) {
+    const int n = static_cast<int>(ps.size());
+    auto x = ps.position;
+    auto r = ps.radius;
+    double xmin, ymin, xmax, ymax, rmax;
+    Kokkos::parallel_reduce("vrut::bounds_xmin", Kokkos::RangePolicy<execution_space>(space, 0, n),
+        KOKKOS_LAMBDA(const int i, double& a) { if (x(i).x < a) a = x(i).x; }, Kokkos::Min<double>(xmin));
+    Kokkos::parallel_reduce("vrut::bounds_ymin", Kokkos::RangePolicy<execution_space>(space, 0, n),
+        KOKKOS_LAMBDA(const int i, double& a) { if (x(i).y < a) a = x(i).y; }, Kokkos::Min<double>(ymin));
+    Kokkos::parallel_reduce("vrut::bounds_xmax", Kokkos::RangePolicy<execution_space>(space, 0, n),
+        KOKKOS_LAMBDA(const int i, double& a) { if (x(i).x > a) a = x(i).x; }, Kokkos::Max<double>(xmax));
+    Kokkos::parallel_reduce("vrut::bounds_ymax", Kokkos::RangePolicy<execution_space>(space, 0, n),
+        KOKKOS_LAMBDA(const int i, double& a) { if (x(i).y > a) a = x(i).y; }, Kokkos::Max<double>(ymax));
+    Kokkos::parallel_reduce("vrut::bounds_rmax", Kokkos::RangePolicy<execution_space>(space, 0, n),
+        KOKKOS_LAMBDA(const int i, double& a) { if (r(i) > a) a = r(i); }, Kokkos::Max<double>(rmax));
+    if (!std::isfinite(xmin + ymin + xmax + ymax))
+      throw std::runtime_error("vrut: a disk position is not finite (time step too large?)");
+    double size = 2.0 * rmax + skin;
+    // Keep the grid at most ~4 cells per disk, whatever the spread.
+    while (((xmax - xmin) / size + 1.0) * ((ymax - ymin) / size + 1.0) > 4.0 * n + 16.0) size *= 2.0;
+    cell_size = size;
+    origin_x = xmin;
+    origin_y = ymin;
+    cells_x = static_cast<int>((xmax - xmin) / size) + 1;
+    cells_y = static_cast<int>((ymax - ymin) / size) + 1;
+    const int ncells = cells_x * cells_y;
+
+    cell_of = Kokkos::View<int*, memory_space>("cell_of", n);
+    cell_start = Kokkos::View<int*, memory_space>("cell_start", ncells + 1);
+    cell_particles = Kokkos::View<int*, memory_space>("cell_particles", n);
+    Kokkos::View<int*, memory_space> fill("cell_fill", ncells);
+    auto cof = cell_of;
+    auto start = cell_start;
+    auto members = cell_particles;
+    const int cx = cells_x, cy = cells_y;
+    const double ox = origin_x, oy = origin_y;
+    Kokkos::parallel_for("vrut::cell_count", Kokkos::RangePolicy<execution_space>(space, 0, n),
+        KOKKOS_LAMBDA(const int i) {
+          int ix = static_cast<int>((x(i).x - ox) / size), iy = static_cast<int>((x(i).y - oy) / size);
+          ix = ix < 0 ? 0 : (ix >= cx ? cx - 1 : ix);
+          iy = iy < 0 ? 0 : (iy >= cy ? cy - 1 : iy);
+          cof(i) = iy * cx + ix;
+          Kokkos::atomic_increment(&start(cof(i) + 1));
+        });
+    Kokkos::parallel_scan("vrut::cell_scan", Kokkos::RangePolicy<execution_space>(space, 1, ncells + 1),
+        KOKKOS_LAMBDA(const int c, int& partial, const bool final) {
+          partial += start(c);
+          if (final) start(c) = partial;
+        });
+    Kokkos::parallel_for("vrut::cell_fill", Kokkos::RangePolicy<execution_space>(space, 0, n),
+        KOKKOS_LAMBDA(const int i) {
+          const int c = cof(i);
+          members(start(c) + Kokkos::atomic_fetch_add(&fill(c), 1)) = i;
+        });
+  }
+
+  // Fills a new partner list; returns the largest count (> capacity: redo larger).
+  int fill(const execution_space& space, const Particles<memory_space>& ps, double skin) {
+    const int n = static_cast<int>(ps.size());
+    const int cap = capacity;
+    Kokkos::View<int**, memory_space> new_partner("partner", n, cap);
+    Kokkos::View<int*, memory_space> new_count("count", n);
+    Kokkos::View<state_type**, memory_space> new_state("contact_state", n, cap);
+    auto old_partner = partner;
+    auto old_count = count;
+    auto old_state = state;
+    auto x = ps.position;
+    auto r = ps.radius;
+    auto cof = cell_of;
+    auto start = cell_start;
+    auto members = cell_particles;
+    const int cx = cells_x, cy = cells_y;
+    int needed = 0;
+    Kokkos::parallel_reduce("vrut::contact_fill", Kokkos::RangePolicy<execution_space>(space, 0, n),
+        KOKKOS_LAMBDA(const int i, int& most) {
+          int k = 0;
+          const int ix = cof(i) % cx, iy = cof(i) / cx;
+          for (int dy = -1; dy <= 1; ++dy) {
+            const int yy = iy + dy;
+            if (yy < 0 || yy >= cy) continue;
+            for (int dx = -1; dx <= 1; ++dx) {
+              const int xx = ix + dx;
+              if (xx < 0 || xx >= cx) continue;
+              const int c = yy * cx + xx;
+              for (int m = start(c); m < start(c + 1); ++m) {
+                const int j = members(m);
+                if (j <= i) continue;
+                const double reach = r(i) + r(j) + skin;
+                const Vec2 d = x(j) - x(i);
+                if (dot(d, d) < reach * reach) {
+                  if (k < cap) new_partner(i, k) = j;
+                  ++k;
+                }
+              }
+            }
+          }
+          // Bonded pairs stay, however far apart.
+          for (int m = 0; m < old_count(i); ++m) {
+            if (!is_bonded<Law>(old_state(i, m))) continue;
+            const int j = old_partner(i, m);
+            bool found = false;
+            for (int q = 0; q < k && q < cap; ++q) found = found || new_partner(i, q) == j;
+            if (!found) {
+              if (k < cap) new_partner(i, k) = j;
+              ++k;
+            }
+          }
+          if (k > most) most = k;
+          if (k > cap) return;
+          // Sorted partners give a fixed summation order on every backend.
+          for (int a = 1; a < k; ++a) {
+            const int v = new_partner(i, a);
+            int b = a - 1;
+            while (b >= 0 && new_partner(i, b) > v) {
+              new_partner(i, b + 1) = new_partner(i, b);
+              --b;
+            }
+            new_partner(i, b + 1) = v;
+          }
+          new_count(i) = k;
+          for (int a = 0; a < k; ++a) {
+            const int j = new_partner(i, a);
+            state_type s{};
+            for (int m = 0; m < old_count(i); ++m)
+              if (old_partner(i, m) == j) s = old_state(i, m);
+            new_state(i, a) = s;
+          }
+        },
+        Kokkos::Max<int>(needed));
+    if (needed > cap) return needed;
+    partner = new_partner;
+    count = new_count;
+    state = new_state;
+    load = Kokkos::View<ContactLoad**, memory_space>("contact_load", n, cap);
+    return needed;
+  }
+
+  int fill_reverse(const execution_space& space, int n) {
+    const int cap = capacity, rcap = reverse_capacity;
+    reverse = Kokkos::View<int**, memory_space>("reverse", n, rcap);
+    reverse_count = Kokkos::View<int*, memory_space>("reverse_count", n);
+    auto rev = reverse;
+    auto rcount = reverse_count;
+    auto p = partner;
+    auto cnt = count;
+    Kokkos::parallel_for("vrut::reverse_fill", Kokkos::RangePolicy<execution_space>(space, 0, n),
+        KOKKOS_LAMBDA(const int i) {
+          for (int k = 0; k < cnt(i); ++k) {
+            const int j = p(i, k);
+            const int slot = Kokkos::atomic_fetch_add(&rcount(j), 1);
+            if (slot < rcap) rev(j, slot) = i * cap + k;
+          }
+        });
+    int needed = 0;
+    Kokkos::parallel_reduce("vrut::reverse_sort", Kokkos::RangePolicy<execution_space>(space, 0, n),
+        KOKKOS_LAMBDA(const int j, int& most) {
+          const int c = rcount(j);
+          if (c > most) most = c;
+          if (c > rcap) return;
+          for (int a = 1; a < c; ++a) {
+            const int v = rev(j, a);
+            int b = a - 1;
+            while (b >= 0 && rev(j, b) > v) {
+              rev(j, b + 1) = rev(j, b);
+              --b;
+            }
+            rev(j, b + 1) = v;
+          }
+        },
+        Kokkos::Max<int>(needed));
+    return needed;
+  }
+};
+
+}  // namespace vrut

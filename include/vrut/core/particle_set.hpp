@@ -1,0 +1,43 @@
+#pragma once
+// Host-side description of disks, the input from which a Simulation is built.
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vrut {
+
+struct ParticleSet {
+  std::vector<double> x, y, radius, density;
+  std::vector<int> group;
+
+  std::size_t size() const { return x.size(); }
+
+  void add(double px, double py, double r, double rho, int g = 0) {
+    if (!(r > 0.0)) throw std::invalid_argument("vrut: a disk radius must be positive");
+    if (!(rho > 0.0)) throw std::invalid_argument("vrut: a disk density must be positive");
+    if (g < 0) throw std::invalid_argument("vrut: a material group must be >= 0");
+    x.push_back(px);
+    y.push_back(py);
+    radius.push_back(r);
+    density.push_back(rho);
+    group.push_back(g);
+  }
+};
+
+// Disks on a hexagonal close packing: rows along x, each row shifted by
+// half a diameter, rows 2r*sqrt(3)/2 apart. Every inner disk touches six.
+inline ParticleSet hex_packing(int columns, int rows, double radius, double density,
+                               double x0 = 0.0, double y0 = 0.0, int group = 0) {
+  if (columns < 1 || rows < 1) throw std::invalid_argument("vrut: hex_packing needs at least one row and column");
+  ParticleSet set;
+  const double dy = radius * 1.7320508075688772;  // 2r * sqrt(3)/2
+  for (int row = 0; row < rows; ++row) {
+    const double shift = (row % 2) ? radius : 0.0;
+    for (int col = 0; col < columns; ++col)
+      set.add(x0 + radius + shift + 2.0 * radius * col, y0 + radius + dy * row, radius, density, group);
+  }
+  return set;
+}
+
+}  // namespace vrut

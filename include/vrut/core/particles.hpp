@@ -1,0 +1,40 @@
+#pragma once
+// Disk state as a structure of arrays, one Kokkos::View per quantity.
+#include <vrut/core/vec2.hpp>
+
+#include <Kokkos_Core.hpp>
+
+#include <cstddef>
+#include <string>
+
+namespace vrut {
+
+// Bits of Particles::fixity.
+enum Fixity : int {
+  free_motion = 0,
+  prescribed_velocity = 1,  // translation follows the given velocity; forces ignored
+  no_rotation = 2,          // angular velocity stays as given
+};
+
+template <class MemorySpace>
+struct Particles {
+  using memory_space = MemorySpace;
+  template <class T>
+  using view = Kokkos::View<T*, MemorySpace>;
+
+  view<Vec2> position, velocity, force, external_force, displacement;
+  view<double> radius, mass, inertia, rotation, angular_velocity, moment;
+  view<int> group, fixity;
+
+  Particles() = default;
+  explicit Particles(std::size_t n)
+      : position("position", n), velocity("velocity", n), force("force", n),
+        external_force("external_force", n), displacement("displacement", n),
+        radius("radius", n), mass("mass", n), inertia("inertia", n), rotation("rotation", n),
+        angular_velocity("angular_velocity", n), moment("moment", n), group("group", n),
+        fixity("fixity", n) {}
+
+  std::size_t size() const { return position.extent(0); }
+};
+
+}  // namespace vrut

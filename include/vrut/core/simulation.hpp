@@ -1,0 +1,411 @@
+#pragma once
+// The DEM engine: disks, walls, contacts and one time step, all templated.
+//
+//   Law          contact law between disks (contact/concept.hpp)
+//   Space        Kokkos execution space the kernels run in
+//   Integrator   time integration policy (integrate/central_difference.hpp)
+//   Controller   wall controller policy (servo/servo.hpp)
+//   WallLaw      contact law between disks and walls
+//
+// One step (PFC's cycle): contact forces from the positions at t and the
+// velocities at t - dt/2; per disk, the forces summed in a fixed order and
+// the motion advanced; the wall loads summed in a fixed order; the
+// controllers set the wall velocities; the walls move.
+#include <vrut/contact/composite.hpp>
+#include <vrut/contact/concept.hpp>
+#include <vrut/core/assignment.hpp>
+#include <vrut/core/contact_list.hpp>
+#include <vrut/core/particle_set.hpp>
+#include <vrut/core/particles.hpp>
+#include <vrut/core/walls.hpp>
+#include <vrut/integrate/central_difference.hpp>
+#include <vrut/servo/servo.hpp>
+
+#include <Kokkos_Core.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vrut {
+
+struct SimulationSettings {
+  double thickness = 1.0;  // out-of-plane disk width t, m: mass = rho pi r^2 t
+  Vec2 gravity;            // m/s^2
+  double skin = -1.0;      // neighbour-list margin, m; < 0: 0.2 * the largest radius
+};
+
+template <class Law, class Space = Kokkos::DefaultExecutionSpace, class Integrator = CentralDifference,
+          class Controller = ServoControl, class WallLaw = Linear>
+class Simulation {
+  static_assert(check_contact_law<Law>(), "vrut::Simulation: Law is not a contact law (see above)");
+  static_assert(check_contact_law<WallLaw>(), "vrut::Simulation: WallLaw is not a contact law (see above)");
+
+ public:
+  using execution_space = Space;
+  using memory_space = typename Space::memory_space;
+  using law_type = Law;
+  using params_type = typename Law::params_type;
+  using wall_params_type = typename WallLaw::params_type;
+  using wall_state_type = typename WallLaw::state_type;
+  using integrator_params = typename Integrator::params_type;
+  using controller_params = typename Controller::params_type;
+
+  Simulation(const ParticleSet& set, const AssignmentTable<Law>& table, const SimulationSettings& settings = {},
+             const integrator_params& integrator = {}, const execution_space& space = execution_space())
+      : space_(space), settings_(settings), integrator_(integrator), particles_(set.size()),
+        law_params_("law_params", table.groups(), table.groups()), max_law_stiffness_(table.max_stiffness()) {
+    if (set.size() == 0) throw std::invalid_argument("vrut::Simulation: no disks");
+    if (!(settings.thickness > 0.0)) throw std::invalid_argument("vrut::Simulation: thickness must be positive");
+    const int n = static_cast<int>(set.size());
+    auto h = Kokkos::create_mirror_view(particles_.position);
+    auto hr = Kokkos::create_mirror_view(particles_.radius);
+    auto hm = Kokkos::create_mirror_view(particles_.mass);
+    auto hi = Kokkos::create_mirror_view(particles_.inertia);
+    auto hg = Kokkos::create_mirror_view(particles_.group);
+    double rmax = 0.0;
+    for (int i = 0; i < n; ++i) {
+      if (set.group[i] >= table.groups())
+        throw std::invalid_argument("vrut::Simulation: disk " + std::to_string(i) + " has group " +
+                                    std::to_string(set.group[i]) + " but the table has " +
+                                    std::to_string(table.groups()) + " groups");
+      h(i) = {set.x[i], set.y[i]};
+      hr(i) = set.radius[i];
+      hm(i) = set.density[i] * 3.14159265358979323846 * set.radius[i] * set.radius[i] * settings.thickness;
+      hi(i) = 0.5 * hm(i) * set.radius[i] * set.radius[i];
+      hg(i) = set.group[i];
+      rmax = std::max(rmax, set.radius[i]);
+    }
+    Kokkos::deep_copy(particles_.position, h);
+    Kokkos::deep_copy(particles_.radius, hr);
+    Kokkos::deep_copy(particles_.mass, hm);
+    Kokkos::deep_copy(particles_.inertia, hi);
+    Kokkos::deep_copy(particles_.group, hg);
+    if (settings_.skin < 0.0) settings_.skin = 0.2 * rmax;
+
+    auto hp = Kokkos::create_mirror_view(law_params_);
+    for (int a = 0; a < table.groups(); ++a)
+      for (int b = 0; b < table.groups(); ++b)
+        if (table.is_set(a, b)) hp(a, b) = table(a, b);
+    Kokkos::deep_copy(law_params_, hp);
+    rebuild_walls(0);
+  }
+
+  // --- set-up ---------------------------------------------------------------
+  int add_wall(const Wall& wall, const wall_params_type& params, const controller_params& control = {}) {
+    if (!(length(wall) > 0.0)) throw std::invalid_argument("vrut::Simulation: a wall needs two distinct ends");
+    pull_walls();  // the device holds where the existing walls have moved to
+    const int w = static_cast<int>(walls_host_.size());
+    walls_host_.push_back(wall);
+    wall_params_host_.push_back(params);
+    control_host_.push_back(control);
+    wall_stiffness_ = std::max(wall_stiffness_, static_cast<double>(WallLaw::stiffness(params)));
+    rebuild_walls(w + 1);
+    return w;
+  }
+  void set_controller(int w, const controller_params& control) {
+    pull_walls();
+    control_host_.at(w) = control;
+    push_walls();
+  }
+  void set_wall_velocity(int w, Vec2 v) {
+    pull_walls();
+    walls_host_.at(w).velocity = v;
+    push_walls();
+  }
+  int walls() const { return static_cast<int>(walls_host_.size()); }
+
+  // Bonds every disk pair whose gap is at most tolerance (m). Returns the count.
+  int bond_touching_contacts(double tolerance) {
+    contacts_.rebuild(space_, particles_, settings_.skin);
+    auto ps = particles_;
+    auto partner = contacts_.partner;
+    auto count = contacts_.count;
+    auto state = contacts_.state;
+    int bonded = 0;
+    Kokkos::parallel_reduce("vrut::bond", Kokkos::RangePolicy<execution_space>(space_, 0, ps.size()),
+        KOKKOS_LAMBDA(const int i, int& sum) {
+          for (int k = 0; k < count(i); ++k) {
+            const int j = partner(i, k);
+            const double gap = norm(ps.position(j) - ps.position(i)) - ps.radius(i) - ps.radius(j);
+            if (gap <= tolerance) {
+              make_bonded<Law>(state(i, k));
+              if (is_bonded<Law>(state(i, k))) ++sum;
+            }
+          }
+        },
+        bonded);
+    return bonded;
+  }
+
+  // sqrt(m_min / k_max): the time scale of the lightest disk on the stiffest
+  // spring. Multiply by a safety factor (0.1 to 0.3 for dense packings).
+  double critical_timestep() const {
+    auto m = particles_.mass;
+    double mmin = 0.0;
+    Kokkos::parallel_reduce("vrut::min_mass", Kokkos::RangePolicy<execution_space>(space_, 0, m.extent(0)),
+        KOKKOS_LAMBDA(const int i, double& a) { if (m(i) < a) a = m(i); }, Kokkos::Min<double>(mmin));
+    const double k = std::max(max_law_stiffness_, wall_stiffness_);
+    if (!(k > 0.0)) throw std::logic_error("vrut::Simulation: no positive contact stiffness");
+    return std::sqrt(mmin / k);
+  }
+
+  // --- running --------------------------------------------------------------
+  void step(double dt) {
+    if (!(dt > 0.0)) throw std::invalid_argument("vrut::Simulation: dt must be positive");
+    if (contacts_.builds == 0 || contacts_.max_displacement(space_, particles_) > 0.5 * settings_.skin)
+      contacts_.rebuild(space_, particles_, settings_.skin);
+    contact_forces(dt);
+    sum_and_advance(dt);
+    move_walls(dt);
+    time_ += dt;
+    ++steps_;
+  }
+  void run(long steps, double dt) {
+    for (long s = 0; s < steps; ++s) step(dt);
+  }
+
+  // --- reading --------------------------------------------------------------
+  Particles<memory_space>& particles() { return particles_; }
+  const Particles<memory_space>& particles() const { return particles_; }
+  const ContactList<Law, execution_space>& contacts() const { return contacts_; }
+  double time() const { return time_; }
+  long steps() const { return steps_; }
+  const SimulationSettings& settings() const { return settings_; }
+  const execution_space& space() const { return space_; }
+
+  Wall wall(int w) {
+    pull_walls();
+    return walls_host_.at(w);
+  }
+  WallLoad wall_load(int w) const {
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), wall_total_);
+    return h(w);
+  }
+  // Counts of touching (or bonded) contacts and of intact bonds.
+  int active_contacts() const { return count_contacts(false); }
+  int intact_bonds() const { return count_contacts(true); }
+
+  // --- kernels (public only because device lambdas cannot be private) -----
+  void contact_forces(double dt) {
+    auto ps = particles_;
+    auto partner = contacts_.partner;
+    auto count = contacts_.count;
+    auto state = contacts_.state;
+    auto load = contacts_.load;
+    auto params = law_params_;
+    Kokkos::parallel_for("vrut::contact_forces", Kokkos::RangePolicy<execution_space>(space_, 0, ps.size()),
+        KOKKOS_LAMBDA(const int i) {
+          for (int k = 0; k < count(i); ++k) {
+            const int j = partner(i, k);
+            const Vec2 d = ps.position(j) - ps.position(i);
+            const double dist = norm(d);
+            ContactGeometry g;
+            g.normal = (1.0 / dist) * d;
+            g.overlap = ps.radius(i) + ps.radius(j) - dist;
+            if (g.overlap <= 0.0 && !is_bonded<Law>(state(i, k))) {
+              state(i, k) = typename Law::state_type{};
+              load(i, k) = ContactLoad{};
+              continue;
+            }
+            const Vec2 t = perp(g.normal);
+            // Lever arms to the contact point, the middle of the overlap.
+            const double arm_i = ps.radius(i) - 0.5 * g.overlap, arm_j = ps.radius(j) - 0.5 * g.overlap;
+            const Vec2 v_rel = (ps.velocity(j) - (ps.angular_velocity(j) * arm_j) * t) -
+                               (ps.velocity(i) + (ps.angular_velocity(i) * arm_i) * t);
+            g.normal_increment = -dot(v_rel, g.normal) * dt;
+            g.shear_increment = dot(v_rel, t) * dt;
+            g.dt = dt;
+            g.radius_1 = ps.radius(i);
+            g.radius_2 = ps.radius(j);
+            const ContactForce f = Law::force(params(ps.group(i), ps.group(j)), state(i, k), g);
+            ContactLoad l;
+            l.force = f.normal * g.normal + f.shear * t;
+            l.moment_first = -arm_i * f.shear;
+            l.moment_second = -arm_j * f.shear;
+            load(i, k) = l;
+          }
+        });
+  }
+
+  void sum_and_advance(double dt) {
+    auto ps = particles_;
+    auto count = contacts_.count;
+    auto load = contacts_.load;
+    auto rev = contacts_.reverse;
+    auto rcount = contacts_.reverse_count;
+    const int cap = contacts_.capacity;
+    auto wall_view = walls_;
+    auto wparams = wall_params_;
+    auto wstate = wall_state_;
+    auto wload = wall_load_;
+    const int nwalls = walls();
+    const Vec2 gravity = settings_.gravity;
+    const integrator_params integrator = integrator_;
+    Kokkos::parallel_for("vrut::sum_and_advance", Kokkos::RangePolicy<execution_space>(space_, 0, ps.size()),
+        KOKKOS_LAMBDA(const int i) {
+          Vec2 f = ps.external_force(i) + ps.mass(i) * gravity;
+          double m = 0.0;
+          for (int k = 0; k < count(i); ++k) {
+            f -= load(i, k).force;
+            m += load(i, k).moment_first;
+          }
+          for (int q = 0; q < rcount(i); ++q) {
+            const int c = rev(i, q);
+            const ContactLoad& l = load(c / cap, c % cap);
+            f += l.force;
+            m += l.moment_second;
+          }
+          for (int w = 0; w < nwalls; ++w) {
+            ContactGeometry g;
+            const double dist = wall_distance(wall_view(w), ps.position(i), g.normal);
+            g.overlap = ps.radius(i) - dist;
+            if (g.overlap <= 0.0 && !is_bonded<WallLaw>(wstate(i, w))) {
+              wstate(i, w) = wall_state_type{};
+              wload(i, w) = WallLoad{};
+              continue;
+            }
+            const Vec2 t = perp(g.normal);
+            const double arm = ps.radius(i) - g.overlap;
+            const Vec2 v_rel = ps.velocity(i) - (ps.angular_velocity(i) * arm) * t - wall_view(w).velocity;
+            g.normal_increment = -dot(v_rel, g.normal) * dt;
+            g.shear_increment = dot(v_rel, t) * dt;
+            g.dt = dt;
+            g.radius_1 = 0.0;
+            g.radius_2 = ps.radius(i);
+            const ContactForce cf = WallLaw::force(wparams(w), wstate(i, w), g);
+            const Vec2 on_disk = cf.normal * g.normal + cf.shear * t;
+            f += on_disk;
+            m -= arm * cf.shear;
+            WallLoad wl;
+            wl.force = -on_disk;
+            wl.contacts = g.overlap > 0.0 ? 1.0 : 0.0;
+            wload(i, w) = wl;
+          }
+          ps.force(i) = f;
+          ps.moment(i) = m;
+          Integrator::advance(integrator, ps, i, f, m, dt);
+        });
+  }
+
+  // Wall loads summed in fixed blocks, then the blocks in order, so the sum
+  // does not depend on the backend; then the controllers and the motion.
+  static constexpr int reduce_block = 512;
+  void move_walls(double dt) {
+    const int nwalls = walls();
+    if (nwalls == 0) return;
+    const int n = static_cast<int>(particles_.size());
+    const int blocks = (n + reduce_block - 1) / reduce_block;
+    if (block_load_.extent(0) != static_cast<std::size_t>(blocks))
+      block_load_ = Kokkos::View<WallLoad**, memory_space>("wall_block_load", blocks, nwalls);
+    auto bl = block_load_;
+    auto wload = wall_load_;
+    Kokkos::parallel_for("vrut::wall_blocks",
+        Kokkos::RangePolicy<execution_space>(space_, 0, blocks * nwalls), KOKKOS_LAMBDA(const int bw) {
+          const int b = bw / nwalls, w = bw % nwalls;
+          WallLoad sum;
+          const int end = (b + 1) * reduce_block < n ? (b + 1) * reduce_block : n;
+          for (int i = b * reduce_block; i < end; ++i) sum += wload(i, w);
+          bl(b, w) = sum;
+        });
+    auto wall_view = walls_;
+    auto total = wall_total_;
+    auto control = control_;
+    Kokkos::parallel_for("vrut::move_walls", Kokkos::RangePolicy<execution_space>(space_, 0, nwalls),
+        KOKKOS_LAMBDA(const int w) {
+          WallLoad sum;
+          for (int b = 0; b < blocks; ++b) sum += bl(b, w);
+          total(w) = sum;
+          Wall wall = wall_view(w);
+          Controller::control(control(w), wall, sum, dt);
+          wall.start += dt * wall.velocity;
+          wall.end += dt * wall.velocity;
+          wall_view(w) = wall;
+        });
+  }
+
+  int count_contacts(bool bonds_only) const {
+    auto ps = particles_;
+    auto partner = contacts_.partner;
+    auto count = contacts_.count;
+    auto state = contacts_.state;
+    int total = 0;
+    if (contacts_.builds == 0) return 0;
+    Kokkos::parallel_reduce("vrut::count_contacts", Kokkos::RangePolicy<execution_space>(space_, 0, ps.size()),
+        KOKKOS_LAMBDA(const int i, int& sum) {
+          for (int k = 0; k < count(i); ++k) {
+            const bool bonded = is_bonded<Law>(state(i, k));
+            const int j = partner(i, k);
+            const bool touching = norm(ps.position(j) - ps.position(i)) < ps.radius(i) + ps.radius(j);
+            if (bonds_only ? bonded : (bonded || touching)) ++sum;
+          }
+        },
+        total);
+    return total;
+  }
+
+ private:
+  void rebuild_walls(int nwalls) {
+    const int n = static_cast<int>(particles_.size());
+    walls_ = Kokkos::View<Wall*, memory_space>("walls", nwalls);
+    wall_params_ = Kokkos::View<wall_params_type*, memory_space>("wall_params", nwalls);
+    control_ = Kokkos::View<controller_params*, memory_space>("wall_control", nwalls);
+    wall_total_ = Kokkos::View<WallLoad*, memory_space>("wall_total", nwalls);
+    // Contact state with walls: keep what the existing walls had.
+    Kokkos::View<wall_state_type**, memory_space> state("wall_state", n, nwalls);
+    if (wall_state_.extent(1) > 0) {
+      auto old = wall_state_;
+      const int kept = static_cast<int>(old.extent(1));
+      Kokkos::parallel_for("vrut::keep_wall_state", Kokkos::RangePolicy<execution_space>(space_, 0, n),
+          KOKKOS_LAMBDA(const int i) { for (int w = 0; w < kept; ++w) state(i, w) = old(i, w); });
+    }
+    wall_state_ = state;
+    wall_load_ = Kokkos::View<WallLoad**, memory_space>("wall_load", n, nwalls);
+    block_load_ = {};
+    push_walls();
+  }
+  void push_walls() {
+    const int nwalls = walls();
+    auto hw = Kokkos::create_mirror_view(walls_);
+    auto hp = Kokkos::create_mirror_view(wall_params_);
+    auto hc = Kokkos::create_mirror_view(control_);
+    for (int w = 0; w < nwalls; ++w) {
+      hw(w) = walls_host_[w];
+      hp(w) = wall_params_host_[w];
+      hc(w) = control_host_[w];
+    }
+    Kokkos::deep_copy(walls_, hw);
+    Kokkos::deep_copy(wall_params_, hp);
+    Kokkos::deep_copy(control_, hc);
+  }
+  void pull_walls() {
+    if (walls_host_.empty()) return;
+    auto hw = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), walls_);
+    for (int w = 0; w < walls(); ++w) walls_host_[w] = hw(w);
+  }
+
+  execution_space space_;
+  SimulationSettings settings_;
+  integrator_params integrator_;
+  Particles<memory_space> particles_;
+  Kokkos::View<params_type**, memory_space> law_params_;
+  double max_law_stiffness_ = 0.0, wall_stiffness_ = 0.0;
+  ContactList<Law, execution_space> contacts_;
+
+  std::vector<Wall> walls_host_;
+  std::vector<wall_params_type> wall_params_host_;
+  std::vector<controller_params> control_host_;
+  Kokkos::View<Wall*, memory_space> walls_;
+  Kokkos::View<wall_params_type*, memory_space> wall_params_;
+  Kokkos::View<controller_params*, memory_space> control_;
+  Kokkos::View<wall_state_type**, memory_space> wall_state_;
+  Kokkos::View<WallLoad**, memory_space> wall_load_, block_load_;
+  Kokkos::View<WallLoad*, memory_space> wall_total_;
+
+  double time_ = 0.0;
+  long steps_ = 0;
+};
+
+}  // namespace vrut

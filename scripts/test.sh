@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Builds vrut and runs the whole test suite (sets up what is missing first).
+#   BUILD_DIR   build folder (default: build)
+#   CTEST_ARGS  extra arguments for ctest, e.g. "-L physics" or "-LE slow"
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+kokkos=$("$here/scripts/setup.sh" | tail -n 1)
+build=${BUILD_DIR:-$here/build}
+jobs=$(nproc)
+cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DKokkos_ROOT="$kokkos"
+cmake --build "$build" --parallel "$jobs"
+cd "$build"
+export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2} OMP_PROC_BIND=${OMP_PROC_BIND:-false}
+# shellcheck disable=SC2086
+ctest --output-on-failure --timeout 600 ${CTEST_ARGS:-}
