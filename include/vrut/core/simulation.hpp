@@ -163,6 +163,9 @@ class Simulation {
     time_ += dt;
     ++steps_;
   }
+  // Forces a contact-list rebuild now (it happens by itself when disks have
+  // moved more than half the skin).
+  void rebuild_contacts() { contacts_.rebuild(space_, particles_, settings_.skin); }
   void run(long steps, double dt) {
     for (long s = 0; s < steps; ++s) step(dt);
   }
