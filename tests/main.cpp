@@ -4,7 +4,10 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <cstdlib>
+
 int main(int argc, char* argv[]) {
+  ::setenv("OMP_PROC_BIND", "false", 0);  // quiets Kokkos 3's warning; the runtime already read it
   Kokkos::ScopeGuard kokkos(argc, argv);
   return Catch::Session().run(argc, argv);
 }

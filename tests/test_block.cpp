@@ -36,7 +36,7 @@ BlockResult load_block(const vrut_test::BlockSpec& b) {
 
 }  // namespace
 
-TEMPLATE_LIST_TEST_CASE("servo plate on a bonded block reaches and holds its stress; modulus", "[core][physics]",
+TEMPLATE_LIST_TEST_CASE("servo plate on a bonded block holds its stress and the block has the lattice modulus", "[core][physics]",
                         vrut_test::ExecutionSpaces) {
   const vrut_test::BlockSpec b;
   const BlockResult res = load_block<TestType>(b);

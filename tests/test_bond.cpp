@@ -75,7 +75,7 @@ PullResult pull(vrut::Vec2 direction, double strength, double speed) {
 
 }  // namespace
 
-TEMPLATE_LIST_TEST_CASE("a bonded pair carries tension up to its strength, then breaks", "[core][physics]",
+TEMPLATE_LIST_TEST_CASE("a bonded pair carries tension up to its strength and then breaks", "[core][physics]",
                         vrut_test::ExecutionSpaces) {
   const double strength = 2.0, speed = 0.01;
   const PullResult res = pull<TestType>({1.0, 0.0}, strength, speed);
@@ -90,7 +90,7 @@ TEMPLATE_LIST_TEST_CASE("a bonded pair carries tension up to its strength, then 
   CHECK_FALSE(res.force_after_break);
 }
 
-TEMPLATE_LIST_TEST_CASE("a bonded pair carries shear up to its strength, then breaks", "[core][physics]",
+TEMPLATE_LIST_TEST_CASE("a bonded pair carries shear up to its strength and then breaks", "[core][physics]",
                         vrut_test::ExecutionSpaces) {
   const double strength = 1.0, speed = 0.01;
   const PullResult res = pull<TestType>({0.0, 1.0}, strength, speed);

@@ -56,7 +56,7 @@ std::vector<double> shake(long steps) {
 }  // namespace
 
 #if defined(KOKKOS_ENABLE_SERIAL) && defined(KOKKOS_ENABLE_OPENMP)
-TEST_CASE("Serial and OpenMP give the same positions on a 1,000-disk run", "[core][backends]") {
+TEST_CASE("Serial and OpenMP give the same positions on a 1000-disk run", "[core][backends]") {
   const long steps = 3000;
   const auto serial = shake<Kokkos::Serial>(steps);
   const auto openmp = shake<Kokkos::OpenMP>(steps);

@@ -3,6 +3,7 @@
 // into the templates. Host-only.
 #include <Kokkos_Core.hpp>
 
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +48,10 @@ decltype(auto) dispatch_backend(const std::string& name, F&& f) {
 class KokkosSession {
  public:
   explicit KokkosSession(int threads = 0) {
+    // Kokkos 3 warns when OMP_PROC_BIND is unset. The OpenMP runtime has read
+    // its environment already, so this only quiets the warning; the runtime's
+    // default (no binding) stays.
+    ::setenv("OMP_PROC_BIND", "false", 0);
 #if KOKKOS_VERSION >= 30700
     Kokkos::InitializationSettings settings;
     if (threads > 0) settings.set_num_threads(threads);
