@@ -1,6 +1,7 @@
 #pragma once
 // Everything device-safe in one include.
 #include <vrut/contact/bond.hpp>
+#include <vrut/contact/burgers.hpp>
 #include <vrut/contact/composite.hpp>
 #include <vrut/contact/concept.hpp>
 #include <vrut/contact/geometry.hpp>

@@ -7,17 +7,31 @@
 // Shear slot: the same, plus double limit(const params_type&, state_type&, double max_abs),
 //   which caps the stored shear force (the Coulomb slider).
 // Bond slot: see bond.hpp.
+// A normal slot with history may also provide
+//   void cut_tension(const params_type&, state_type&),
+// called when an unbonded contact would pull, to drop the stored tension.
 //
 // While a bond holds, tension and any shear below the bond strength are carried.
 // Without a bond (or once it breaks) tension is cut to zero and the shear force
 // to friction * normal force.
 #include <vrut/contact/bond.hpp>
+#include <vrut/contact/burgers.hpp>
 #include <vrut/contact/geometry.hpp>
 #include <vrut/contact/linear.hpp>
 
 #include <Kokkos_Core.hpp>
 
+#include <type_traits>
+#include <utility>
+
 namespace vrut {
+namespace detail {
+template <class, class = void> struct has_cut_tension : std::false_type {};
+template <class N>
+struct has_cut_tension<N, std::void_t<decltype(N::cut_tension(std::declval<const typename N::params_type&>(),
+                                                               std::declval<typename N::state_type&>()))>>
+    : std::true_type {};
+}  // namespace detail
 
 template <class Normal, class Shear, class Bond = NoBond>
 struct Composite {
@@ -44,7 +58,10 @@ struct Composite {
       if (Bond::holds(p.bond, fn, fs)) return {fn, fs};
       Bond::release(s.bond);
     }
-    if (fn < 0.0) fn = 0.0;
+    if (fn < 0.0) {
+      fn = 0.0;
+      if constexpr (detail::has_cut_tension<Normal>::value) Normal::cut_tension(p.normal, s.normal);
+    }
     fs = Shear::limit(p.shear, s.shear, p.friction * fn);
     return {fn, fs};
   }
@@ -60,6 +77,8 @@ struct Composite {
 // The two laws of the core, and helpers that spell their parameters.
 using Linear = Composite<LinearNormal, LinearShear, NoBond>;
 using LinearBonded = Composite<LinearNormal, LinearShear, ContactBond>;
+using Burgers = Composite<BurgersNormal, BurgersShear, NoBond>;
+using BurgersBonded = Composite<BurgersNormal, BurgersShear, ContactBond>;
 
 inline Linear::params_type linear_params(double kn, double ks, double friction) {
   Linear::params_type p;

@@ -1,0 +1,87 @@
+#pragma once
+// Burger's viscoelastic contact: a Maxwell element (spring K_m, dashpot C_m)
+// in series with a Kelvin element (spring K_k, dashpot C_k), in the normal and
+// in the shear direction. Slots for vrut::Composite (composite.hpp).
+//
+// Time-discrete update: the trapezoidal rule (Crank-Nicolson) applied to each
+// element over one step, the form Itasca PFC documents for its "burger"
+// model. With f the force, u the contact displacement and u_k the Kelvin
+// displacement:
+//   Kelvin:   (f' + f)/2 = K_k (u_k' + u_k)/2 + C_k (u_k' - u_k)/dt
+//   dashpot:  du_md = dt (f' + f) / (2 C_m)
+//   spring:   du_ms = (f' - f) / K_m
+//   du = du_ms + du_md + (u_k' - u_k)
+// which solve to
+//   A = 1 + K_k dt/(2 C_k),  B = 1 - K_k dt/(2 C_k)
+//   C = dt/(2 C_k A) - 1/K_m + dt/(2 C_m),  D = dt/(2 C_k A) + 1/K_m + dt/(2 C_m)
+//   f'   = (du + (1 - B/A) u_k - C f) / D
+//   u_k' = (B u_k + dt/(2 C_k) (f' + f)) / A
+// The rule is A-stable and second order, and exact for the elastic jump
+// (dt -> 0 gives f' - f = K_m du). Its instantaneous stiffness 1/D is below
+// K_m, so K_m bounds it for the critical time step. tests/test_burgers.cpp
+// checks it against the exact creep and relaxation solutions.
+#include <vrut/contact/geometry.hpp>
+
+#include <Kokkos_Core.hpp>
+
+namespace vrut {
+
+struct BurgersElement {
+  double maxwell_stiffness = 0.0;  // K_m, N/m
+  double maxwell_viscosity = 0.0;  // C_m, N s/m
+  double kelvin_stiffness = 0.0;   // K_k, N/m
+  double kelvin_viscosity = 0.0;   // C_k, N s/m
+};
+
+struct BurgersHistory {
+  double force = 0.0;   // f at the end of the last step
+  double kelvin = 0.0;  // u_k
+};
+
+// One trapezoidal step of a Burger's element: displacement increment du
+// (positive loads it), returns the new force.
+KOKKOS_INLINE_FUNCTION double burgers_step(const BurgersElement& e, BurgersHistory& h, double du, double dt) {
+  const double a = 1.0 + e.kelvin_stiffness * dt / (2.0 * e.kelvin_viscosity);
+  const double b = 1.0 - e.kelvin_stiffness * dt / (2.0 * e.kelvin_viscosity);
+  const double common = dt / (2.0 * e.kelvin_viscosity * a) + dt / (2.0 * e.maxwell_viscosity);
+  const double c = common - 1.0 / e.maxwell_stiffness;
+  const double d = common + 1.0 / e.maxwell_stiffness;
+  const double f = (du + (1.0 - b / a) * h.kelvin - c * h.force) / d;
+  h.kelvin = (b * h.kelvin + dt / (2.0 * e.kelvin_viscosity) * (f + h.force)) / a;
+  h.force = f;
+  return f;
+}
+
+// Normal slot: u is the overlap (compression positive).
+struct BurgersNormal {
+  using params_type = BurgersElement;
+  using state_type = BurgersHistory;
+  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const ContactGeometry& g) {
+    return burgers_step(p, s, g.normal_increment, g.dt);
+  }
+  // Without a bond a contact cannot pull: the stored force restarts from zero.
+  KOKKOS_INLINE_FUNCTION static void cut_tension(const params_type&, state_type& s) {
+    if (s.force < 0.0) s.force = 0.0;
+  }
+  KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) { return p.maxwell_stiffness; }
+};
+
+// Shear slot: u is minus the slip of the second body, so the force (on the
+// second body, along the tangent) resists the slip, as the linear spring does.
+struct BurgersShear {
+  using params_type = BurgersElement;
+  using state_type = BurgersHistory;
+  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const ContactGeometry& g) {
+    return burgers_step(p, s, -g.shear_increment, g.dt);
+  }
+  // Coulomb cap: the stored force slides back to the limit; the Kelvin
+  // element keeps its displacement.
+  KOKKOS_INLINE_FUNCTION static double limit(const params_type&, state_type& s, double max_abs) {
+    if (s.force > max_abs) s.force = max_abs;
+    else if (s.force < -max_abs) s.force = -max_abs;
+    return s.force;
+  }
+  KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) { return p.maxwell_stiffness; }
+};
+
+}  // namespace vrut

@@ -1,0 +1,189 @@
+// The Burger's contact element against exact solutions: creep under constant
+// force, relaxation under held displacement, the order of the scheme, and
+// time-temperature superposition.
+#include <vrut/contact/burgers.hpp>
+#include <vrut/contact/composite.hpp>
+#include <vrut/material/burgers_parameters.hpp>
+
+#include <Eigen/Dense>
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace {
+
+using vrut::BurgersElement;
+using vrut::BurgersHistory;
+
+// SPEC section 8 values (t = 50 mm, alpha_T = 1): K_m, C_m, K_k, C_k.
+BurgersElement spec_normal() { return vrut::burgers_element(vrut::BurgersMacro{}, 0.05, 1.0, {}); }
+BurgersElement spec_shear() { return vrut::burgers_element(vrut::BurgersMacro{}, 0.05, 1.0 / 2.7, {}); }
+
+double exact_creep(const BurgersElement& e, double force, double t) {
+  return force * (1.0 / e.maxwell_stiffness + t / e.maxwell_viscosity +
+                  (1.0 - std::exp(-e.kelvin_stiffness * t / e.kelvin_viscosity)) / e.kelvin_stiffness);
+}
+
+// Exact relaxation of f and u_k under u held at u0 from t = 0:
+//   f'   = -K_m (f / C_m + (f - K_k u_k) / C_k),   u_k' = (f - K_k u_k) / C_k,
+// solved by eigen-decomposition of the 2x2 system, f(0) = K_m u0, u_k(0) = 0.
+double exact_relaxation(const BurgersElement& e, double u0, double t) {
+  Eigen::Matrix2d a;
+  a << -e.maxwell_stiffness * (1.0 / e.maxwell_viscosity + 1.0 / e.kelvin_viscosity),
+      e.maxwell_stiffness * e.kelvin_stiffness / e.kelvin_viscosity, 1.0 / e.kelvin_viscosity,
+      -e.kelvin_stiffness / e.kelvin_viscosity;
+  Eigen::EigenSolver<Eigen::Matrix2d> solver(a);
+  const Eigen::Matrix2cd v = solver.eigenvectors();
+  const Eigen::Vector2cd lambda = solver.eigenvalues();
+  const Eigen::Vector2cd c = v.colPivHouseholderQr().solve(Eigen::Vector2cd(e.maxwell_stiffness * u0, 0.0));
+  Eigen::Vector2cd x = v * (c.array() * (lambda.array() * t).exp()).matrix();
+  return x(0).real();
+}
+
+// The displacement step that brings the element to `force` this step, found
+// by probing copies of the history (the element is linear in du).
+double du_for_force(const BurgersElement& e, const BurgersHistory& h, double force, double dt) {
+  BurgersHistory a = h, b = h;
+  const double f0 = vrut::burgers_step(e, a, 0.0, dt);
+  const double f1 = vrut::burgers_step(e, b, 1.0, dt);
+  return (force - f0) / (f1 - f0);
+}
+
+// Creep under `force` applied at t = 0 (the elastic jump first, with dt -> 0),
+// returns the largest relative error against the exact curve and the final error.
+struct CreepError {
+  double worst_relative, final_absolute, final_u;
+};
+CreepError creep(const BurgersElement& e, double force, double dt, double duration) {
+  BurgersHistory h;
+  double u = du_for_force(e, h, force, 1e-300 * dt);
+  vrut::burgers_step(e, h, u, 1e-300 * dt);
+  CreepError err{0.0, 0.0, 0.0};
+  const long steps = std::lround(duration / dt);
+  for (long s = 1; s <= steps; ++s) {
+    const double du = du_for_force(e, h, force, dt);
+    vrut::burgers_step(e, h, du, dt);
+    u += du;
+    const double exact = exact_creep(e, force, s * dt);
+    err.worst_relative = std::max(err.worst_relative, std::abs(u / exact - 1.0));
+    err.final_absolute = std::abs(u - exact);
+  }
+  err.final_u = u;
+  return err;
+}
+
+double tau_min(const BurgersElement& e) {
+  return std::min(e.maxwell_viscosity / e.maxwell_stiffness, e.kelvin_viscosity / e.kelvin_stiffness);
+}
+
+}  // namespace
+
+TEST_CASE("Burger's element creeps as the exact solution (normal and shear)", "[burgers][physics]") {
+  for (const BurgersElement& e : {spec_normal(), spec_shear()}) {
+    const double dt = 1e-3 * tau_min(e);
+    const CreepError err = creep(e, 100.0, dt, 3.0 * e.kelvin_viscosity / e.kelvin_stiffness);
+    INFO("K_m " << e.maxwell_stiffness << ": worst relative error " << err.worst_relative);
+    CHECK(err.worst_relative < 1e-4);
+  }
+}
+
+TEST_CASE("Burger's element relaxes as the exact solution", "[burgers][physics]") {
+  for (const BurgersElement& e : {spec_normal(), spec_shear()}) {
+    const double u0 = 1e-4, dt = 1e-3 * tau_min(e);
+    BurgersHistory h;
+    vrut::burgers_step(e, h, u0, 1e-300);  // the jump: f = K_m u0
+    CHECK(h.force == Approx(e.maxwell_stiffness * u0).epsilon(1e-12));
+    double worst = 0.0;
+    const long steps = std::lround(3.0 * e.maxwell_viscosity / e.maxwell_stiffness / dt);
+    for (long s = 1; s <= steps; ++s) {
+      const double f = vrut::burgers_step(e, h, 0.0, dt);
+      const double exact = exact_relaxation(e, u0, s * dt);
+      // Relative to the initial force: the force decays towards zero.
+      worst = std::max(worst, std::abs(f - exact) / (e.maxwell_stiffness * u0));
+    }
+    INFO("worst error / initial force " << worst);
+    CHECK(worst < 1e-4);
+  }
+}
+
+TEST_CASE("Burger's update converges at second order", "[burgers][physics]") {
+  for (const BurgersElement& e : {spec_normal(), spec_shear()}) {
+    const double duration = 2.0 * e.kelvin_viscosity / e.kelvin_stiffness;
+    const double dt = 0.05 * tau_min(e);
+    const double e1 = creep(e, 100.0, dt, duration).final_absolute;
+    const double e2 = creep(e, 100.0, dt / 2, duration).final_absolute;
+    const double e3 = creep(e, 100.0, dt / 4, duration).final_absolute;
+    const double order1 = std::log2(e1 / e2), order2 = std::log2(e2 / e3);
+    INFO("errors " << e1 << ", " << e2 << ", " << e3 << "; observed orders " << order1 << ", " << order2);
+    CHECK(order1 > 1.8);
+    CHECK(order2 > 1.8);
+  }
+}
+
+TEST_CASE("time-temperature shift: creep at t / alpha_T equals unshifted creep at t", "[burgers][physics]") {
+  const vrut::BurgersMacro macro;
+  const vrut::TimeShift shift(1e4);
+  const BurgersElement plain = vrut::burgers_element(macro, 0.05, 1.0, {});
+  const BurgersElement shifted = vrut::burgers_element(macro.shifted(shift), 0.05, 1.0, {});
+  CHECK(shifted.maxwell_viscosity == Approx(416.7).epsilon(1e-3));  // SPEC section 8
+  CHECK(shifted.kelvin_viscosity == Approx(50.0).epsilon(1e-12));
+  const double duration = 342.2, dt = 1e-3 * tau_min(plain);
+  const double u_plain = creep(plain, 765.0, dt, duration).final_u;
+  const double u_shifted = creep(shifted, 765.0, shift.reduced_time(dt), shift.reduced_time(duration)).final_u;
+  INFO("plain " << u_plain << " shifted " << u_shifted);
+  CHECK(std::abs(u_shifted / u_plain - 1.0) < 1e-9);
+}
+
+TEST_CASE("micro parameters follow the SPEC's rules and numbers", "[burgers][unit]") {
+  const double t = 0.05, nu = 0.35;
+  const auto p = vrut::mastic_params(vrut::BurgersMacro{}, t, nu);
+  CHECK(p.normal.maxwell_stiffness == Approx(2.32e5));
+  CHECK(p.normal.maxwell_viscosity == Approx(4.167e6).epsilon(1e-3));
+  CHECK(p.normal.kelvin_stiffness == Approx(4.10e4));
+  CHECK(p.normal.kelvin_viscosity == Approx(5.0e5));
+  CHECK(p.shear.maxwell_stiffness == Approx(2.32e5 / 2.7));
+  CHECK(p.shear.kelvin_viscosity == Approx(5.0e5 / 2.7));
+  const auto twice = vrut::mastic_params(vrut::BurgersMacro{}, t, nu, vrut::MicroConversion::seed(), 2.0);
+  CHECK(twice.normal.kelvin_stiffness == Approx(2.0 * 4.10e4));
+  const auto agg = vrut::aggregate_params(55.5e9, t, nu);
+  CHECK(agg.normal.stiffness == Approx(5.55e9));
+  CHECK(agg.shear.stiffness == Approx(5.55e9 / 2.7));
+  // SPEC section 8: the mastic alone creeps to a strain of 3.88 at 0.7 MPa and 342 s.
+  CHECK(vrut::BurgersMacro{}.creep_strain(0.7e6, 342.2) == Approx(3.88).epsilon(2e-3));
+}
+
+TEST_CASE("bad Burger's parameters are refused with a message", "[burgers][unit]") {
+  vrut::BurgersMacro bad;
+  bad.eta1 = 0.0;
+  CHECK_THROWS_WITH(bad.validate(), Catch::Contains("eta1"));
+  bad = {};
+  bad.E2 = -1.0;
+  CHECK_THROWS_WITH(bad.validate(), Catch::Contains("E2"));
+  CHECK_THROWS_WITH(vrut::mastic_params(vrut::BurgersMacro{}, 0.05, 0.5), Catch::Contains("Poisson"));
+  CHECK_THROWS_WITH(vrut::mastic_params(vrut::BurgersMacro{}, 0.05, -0.1), Catch::Contains("Poisson"));
+  CHECK_THROWS_WITH(vrut::TimeShift(0.0), Catch::Contains("alpha_T"));
+  CHECK_THROWS_WITH(vrut::TimeShift(-3.0), Catch::Contains("alpha_T"));
+}
+
+TEST_CASE("an unbonded Burger's contact does not pull and is capped by friction", "[burgers][unit]") {
+  using Law = vrut::Burgers;
+  Law::params_type p;
+  p.normal = spec_normal();
+  p.shear = spec_shear();
+  p.friction = 0.3;
+  Law::state_type s{};
+  vrut::ContactGeometry g;
+  g.dt = 1e-3;
+  g.normal_increment = 1e-4;  // load
+  g.shear_increment = 1e-3;   // a large slip
+  const vrut::ContactForce f1 = Law::force(p, s, g);
+  CHECK(f1.normal > 0.0);
+  CHECK(std::abs(f1.shear) == Approx(0.3 * f1.normal));
+  g.normal_increment = -1e-3;  // pull away fast: the Maxwell spring would go into tension
+  g.shear_increment = 0.0;
+  const vrut::ContactForce f2 = Law::force(p, s, g);
+  CHECK(f2.normal == 0.0);
+  CHECK(s.normal.force == 0.0);  // the stored tension is dropped
+  CHECK(f2.shear == 0.0);
+}
