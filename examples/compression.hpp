@@ -3,6 +3,7 @@
 // servo-controlled plate to a target stress. Generic in the contact law, so a
 // user-written law plugs in (see custom_law/).
 #include <vrut/backend.hpp>
+#include <vrut/io/output_dir.hpp>
 #include <vrut/io/progress.hpp>
 #include <vrut/vrut.hpp>
 
@@ -70,7 +71,7 @@ struct Material {
 
 template <class Law, class Space>
 nlohmann::json compress(const Options& o, const vrut::AssignmentTable<Law>& table, const Material& mat,
-                        const Space& space) {
+                        const vrut::OutputDir& dir, const Space& space) {
   using namespace vrut;
   const double r = o.radius_mm * 1e-3, t = o.thickness_mm * 1e-3, stress = o.stress_mpa * 1e6;
   SimulationSettings settings;
@@ -92,8 +93,7 @@ nlohmann::json compress(const Options& o, const vrut::AssignmentTable<Law>& tabl
   const double dt = 0.2 * sim.critical_timestep();
   const double height0 = top;
 
-  std::filesystem::create_directories(o.out);
-  std::ofstream csv(std::filesystem::path(o.out) / "compression.csv");
+  std::ofstream csv(dir.file("compression.csv"));
   csv << "step,time_s,plate_stress_mpa,strain\n";
   ProgressBar bar("compressing", o.steps);
   const long every = std::max(1L, o.steps / 200);
@@ -127,27 +127,27 @@ nlohmann::json compress(const Options& o, const vrut::AssignmentTable<Law>& tabl
 // Everything main does after parsing: output folder check, Kokkos, dispatch.
 template <class Law, class MakeTable>
 int run(const Options& o, const Material& mat, MakeTable make_table, const std::string& law_name) {
-  namespace fs = std::filesystem;
   try {
-    if (fs::exists(o.out) && !fs::is_empty(o.out) && !o.force) {
-      std::cerr << "error: output folder '" << o.out << "' exists and is not empty (use --force to overwrite)\n";
-      return 2;
-    }
+    vrut::OutputDir dir(o.out, o.force);
     vrut::KokkosSession kokkos(o.threads);
     const vrut::AssignmentTable<Law> table = make_table();
     nlohmann::json j = vrut::dispatch_backend(o.backend, [&](auto space) {
-      auto summary = compress<Law>(o, table, mat, space);
+      auto summary = compress<Law>(o, table, mat, dir, space);
       summary["threads"] = vrut::concurrency(space);
       return summary;
     });
     j["backend"] = o.backend;
     j["law"] = law_name;
-    std::ofstream(fs::path(o.out) / "summary.json") << j.dump(2) << '\n';
+    std::ofstream(dir.file("summary.json")) << j.dump(2) << '\n';
+    dir.commit();
     std::printf("plate stress %.4f MPa (target %.4f), strain %.5f, %.3g particle-steps/s on %s\n",
                 j["plate_stress_mpa"].get<double>(), o.stress_mpa, j["plate_strain"].get<double>(),
                 j["particle_steps_per_second"].get<double>(), o.backend.c_str());
     std::printf("results in %s/summary.json and compression.csv\n", o.out.c_str());
     return 0;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << '\n';
     return 1;

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Bad input to an example gets a clear message and exit code 1 or 2, never a
-# crash or a hang; --help exits 0.  Usage: cli_errors.sh EXECUTABLE
+# crash or a hang; --help exits 0.  Usage: cli_errors.sh demo|creep EXECUTABLE
 set -u
-exe=$1
+which=$1 exe=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
@@ -20,17 +20,38 @@ expect() {  # expect CODES PATTERN -- ARGS...
 }
 
 expect "0" "usage" -- --help
-expect "1 2" "columns" -- --columns -5
-expect "1 2" "radius" -- --radius-mm -0.5
 expect "1 2" "backend" -- --backend vulkan
-expect "1 2" "stress" -- --stress-mpa abc
-expect "1 2" "steps" -- --steps 0
 expect "1 2" "not expected|extra|unknown|following argument" -- --no-such-option 3
-expect "1 2" "columns" -- --columns
 mkdir -p "$work/taken" && touch "$work/taken/file"
-expect "1 2" "exists" -- --out taken --steps 10
-expect "0" "plate stress" -- --out taken --steps 10 --columns 4 --rows 4 --force
-[[ -f "$work/taken/summary.json" ]] || { echo "FAIL: no summary.json after --force"; failures=$((failures + 1)); }
+expect "1 2" "exists" -- --out taken
+
+case $which in
+demo)
+  expect "1 2" "columns" -- --columns -5
+  expect "1 2" "radius" -- --radius-mm -0.5
+  expect "1 2" "stress" -- --stress-mpa abc
+  expect "1 2" "steps" -- --steps 0
+  expect "1 2" "columns" -- --columns
+  expect "0" "plate stress" -- --out taken --steps 10 --columns 4 --rows 4 --force
+  [[ -f "$work/taken/summary.json" ]] || { echo "FAIL: no summary.json after --force"; failures=$((failures + 1)); }
+  ;;
+creep)
+  expect "1 2" "eta1" -- --eta1 -5 --out a
+  expect "1 2" "eta2" -- --eta2 0 --out b
+  expect "1 2" "E1" -- --E1 0 --out c
+  expect "1 2" "Poisson" -- --nu 0.5 --out d
+  expect "1 2" "Poisson" -- --nu -0.1 --out e
+  expect "1 2" "alpha_T" -- --shift 0 --out f
+  expect "1 2" "alpha_T" -- --shift -1e4 --out g
+  for d in a b c d e f g; do
+    [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
+  done
+  expect "0" "apparent/macro" -- --out taken --force --stress-mpa 0.01 --time-s 20 --columns 6 --rows 4
+  for f in creep.csv creep.json creep.png; do
+    [[ -s "$work/taken/$f" ]] || { echo "FAIL: no $f"; failures=$((failures + 1)); }
+  done
+  ;;
+esac
 
 echo "$failures failure(s)"
 exit $((failures > 0))

@@ -52,6 +52,7 @@ class Simulation {
   using wall_state_type = typename WallLaw::state_type;
   using integrator_params = typename Integrator::params_type;
   using controller_params = typename Controller::params_type;
+  using controller_state = typename Controller::state_type;
 
   Simulation(const ParticleSet& set, const AssignmentTable<Law>& table, const SimulationSettings& settings = {},
              const integrator_params& integrator = {}, const execution_space& space = execution_space())
@@ -316,13 +317,14 @@ class Simulation {
     auto wall_view = walls_;
     auto total = wall_total_;
     auto control = control_;
+    auto control_state = control_state_;
     Kokkos::parallel_for("vrut::move_walls", Kokkos::RangePolicy<execution_space>(space_, 0, nwalls),
         KOKKOS_LAMBDA(const int w) {
           WallLoad sum;
           for (int b = 0; b < blocks; ++b) sum += bl(b, w);
           total(w) = sum;
           Wall wall = wall_view(w);
-          Controller::control(control(w), wall, sum, dt);
+          Controller::control(control(w), control_state(w), wall, sum, dt);
           wall.start += dt * wall.velocity;
           wall.end += dt * wall.velocity;
           wall_view(w) = wall;
@@ -355,6 +357,11 @@ class Simulation {
     walls_ = Kokkos::View<Wall*, memory_space>("walls", nwalls);
     wall_params_ = Kokkos::View<wall_params_type*, memory_space>("wall_params", nwalls);
     control_ = Kokkos::View<controller_params*, memory_space>("wall_control", nwalls);
+    Kokkos::View<controller_state*, memory_space> control_state("wall_control_state", nwalls);
+    if (control_state_.extent(0) > 0)
+      Kokkos::deep_copy(Kokkos::subview(control_state, std::make_pair(std::size_t(0), control_state_.extent(0))),
+                        control_state_);
+    control_state_ = control_state;
     wall_total_ = Kokkos::View<WallLoad*, memory_space>("wall_total", nwalls);
     // Contact state with walls: keep what the existing walls had.
     Kokkos::View<wall_state_type**, memory_space> state("wall_state", n, nwalls);
@@ -403,6 +410,7 @@ class Simulation {
   Kokkos::View<Wall*, memory_space> walls_;
   Kokkos::View<wall_params_type*, memory_space> wall_params_;
   Kokkos::View<controller_params*, memory_space> control_;
+  Kokkos::View<controller_state*, memory_space> control_state_;
   Kokkos::View<wall_state_type**, memory_space> wall_state_;
   Kokkos::View<WallLoad**, memory_space> wall_load_, block_load_;
   Kokkos::View<WallLoad*, memory_space> wall_total_;

@@ -2,6 +2,7 @@
 // Wall controllers: policies that set a wall's velocity once per step from
 // the load the disks put on it.
 #include <vrut/core/walls.hpp>
+#include <vrut/integrate/central_difference.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -10,15 +11,21 @@ namespace vrut {
 // Leaves every wall at the velocity it was given (velocity control).
 struct VelocityControl {
   struct params_type {};
-  KOKKOS_INLINE_FUNCTION static void control(const params_type&, Wall&, const WallLoad&, double) {}
+  struct state_type {};
+  KOKKOS_INLINE_FUNCTION static void control(const params_type&, state_type&, Wall&, const WallLoad&, double) {}
 };
 
-// PFC-style servo: moves the wall along its inward normal to bring the normal
-// force the disks exert on it to a target,
-//   v = alpha (F_target - F_measured) / (k_n N_c dt),
-// the velocity that would close the gap in one step if the N_c touching
-// contacts of stiffness k_n were the only compliance, relaxed by alpha < 1.
-// The speed is capped by max_speed.
+// PFC-style servo with integral action: moves the wall along its inward
+// normal to bring the normal force the disks exert on it to a target. With
+// the error as a length, e = (F_target - F_measured) / (k_n N_c),
+//   v = alpha e / dt + v_i,    v_i += integral * alpha e / dt,
+// PFC's proportional term (the velocity that would close the gap in one step
+// if the N_c touching contacts of stiffness k_n were the only compliance,
+// relaxed by alpha < 1) plus an integral term. A proportional servo alone
+// lags by e = v dt / alpha when the specimen keeps creeping at speed v; the
+// integral term learns that speed, so the force settles on its target. It
+// integrates only while something touches the wall (no wind-up on approach).
+// Speeds are capped by max_speed.
 struct ServoControl {
   struct params_type {
     int enabled = 0;
@@ -26,6 +33,10 @@ struct ServoControl {
     double alpha = 0.5;              // relaxation factor, (0, 1]
     double contact_stiffness = 0.0;  // k_n of one wall contact, N/m
     double max_speed = 1.0;          // m/s
+    double integral = 0.05;          // integral gain, a fraction of alpha per step; 0: PFC's servo
+  };
+  struct state_type {
+    double velocity = 0.0;  // the integral term v_i, along the inward normal
   };
 
   // Stress to force for a plate of the given length and out-of-plane thickness.
@@ -44,13 +55,52 @@ struct ServoControl {
     return -dot(load.force, inward_normal(w));
   }
 
-  KOKKOS_INLINE_FUNCTION static void control(const params_type& p, Wall& w, const WallLoad& load, double dt) {
+  KOKKOS_INLINE_FUNCTION static double clamp(double v, double limit) {
+    return v > limit ? limit : (v < -limit ? -limit : v);
+  }
+
+  KOKKOS_INLINE_FUNCTION static void control(const params_type& p, state_type& s, Wall& w, const WallLoad& load,
+                                             double dt) {
     if (!p.enabled) return;
     const double contacts = load.contacts > 1.0 ? load.contacts : 1.0;
-    double speed = p.alpha * (p.target_force - compressive_force(w, load)) / (p.contact_stiffness * contacts * dt);
-    if (speed > p.max_speed) speed = p.max_speed;
-    if (speed < -p.max_speed) speed = -p.max_speed;
-    w.velocity = speed * inward_normal(w);
+    const double error = (p.target_force - compressive_force(w, load)) / (p.contact_stiffness * contacts);
+    if (load.contacts > 0.0) s.velocity = clamp(s.velocity + p.integral * p.alpha * error / dt, p.max_speed);
+    w.velocity = clamp(p.alpha * error / dt + s.velocity, p.max_speed) * inward_normal(w);
+  }
+};
+
+// A plate carrying a dead load: it moves along its inward normal as a rigid
+// body of the given mass under the target force and the disks' reaction,
+//   m dv/dt = F_target - F_measured,
+// the constant-stress loading of a laboratory creep frame. Unlike the servo it
+// applies the full load from the first step.
+struct LoadControl {
+  struct params_type {
+    int enabled = 0;
+    double target_force = 0.0;  // N, compressive
+    double mass = 0.0;          // kg
+    double damping = 0.0;       // local damping of the plate's unbalanced force, as for the disks
+  };
+  struct state_type {};
+
+  static params_type for_stress(double stress, double plate_length, double thickness, double mass,
+                                double damping = 0.0) {
+    params_type p;
+    p.enabled = 1;
+    p.target_force = stress * plate_length * thickness;
+    p.mass = mass;
+    p.damping = damping;
+    return p;
+  }
+
+  KOKKOS_INLINE_FUNCTION static void control(const params_type& p, state_type&, Wall& w, const WallLoad& load,
+                                             double dt) {
+    if (!p.enabled) return;
+    const Vec2 n = inward_normal(w);
+    const double v = dot(w.velocity, n);
+    const double unbalanced = p.target_force - ServoControl::compressive_force(w, load);
+    const double speed = v + CentralDifference::damped(unbalanced, v, p.damping) / p.mass * dt;
+    w.velocity = speed * n;
   }
 };
 
