@@ -1,0 +1,207 @@
+// The digital specimen: stereology against a Monte Carlo experiment, the
+// placed aggregates against the 2D gradation, shapes, voids, reproducibility.
+#include <vrut/specimen/specimen.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <random>
+
+namespace {
+
+// Random spheres of each class (mean radius) in an L x L x H box, cut by the
+// plane z = H/2; sections counted per class of section diameter.
+std::vector<double> monte_carlo_sections(const vrut::Stereology& st, double L, double H, std::uint64_t seed,
+                                         double& fine) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> counts(st.classes.size(), 0.0);
+  fine = 0.0;
+  for (std::size_t i = 0; i < st.classes.size(); ++i) {
+    const double R = st.classes[i].mean_radius();
+    std::poisson_distribution<long> how_many(st.number_per_volume[i] * L * L * H);
+    const long n = how_many(rng);
+    for (long k = 0; k < n; ++k) {
+      const double h = std::abs(u(rng) * H - 0.5 * H);  // centre's distance to the plane
+      u(rng), u(rng);                                   // x, y: any point of the box
+      if (h >= R) continue;
+      const double d = 2.0 * std::sqrt(R * R - h * h);
+      bool binned = false;
+      for (std::size_t j = 0; j < st.classes.size(); ++j)
+        if (d >= st.classes[j].lower_mm && d < st.classes[j].upper_mm) counts[j] += 1.0, binned = true;
+      if (!binned && d < st.classes.front().lower_mm) fine += 1.0;
+    }
+  }
+  return counts;
+}
+
+// Chi-square statistic of observed counts against probabilities, merging
+// classes from the top until every expected count is at least 5.
+double chi_square(std::vector<double> observed, std::vector<double> p, int& dof) {
+  double total = 0.0, ptotal = 0.0;
+  for (double o : observed) total += o;
+  for (double q : p) ptotal += q;
+  std::vector<double> e;
+  for (double q : p) e.push_back(total * q / ptotal);
+  for (std::size_t j = e.size(); j-- > 1;)
+    if (e[j] < 5.0) {
+      e[j - 1] += e[j], observed[j - 1] += observed[j];
+      e.erase(e.begin() + j), observed.erase(observed.begin() + j);
+    }
+  double chi = 0.0;
+  for (std::size_t j = 0; j < e.size(); ++j) chi += (observed[j] - e[j]) * (observed[j] - e[j]) / e[j];
+  dof = static_cast<int>(e.size()) - 1;
+  return chi;
+}
+
+double chi_square_critical_1pct(int dof) {
+  static const double table[] = {0.0, 6.635, 9.210, 11.345, 13.277, 15.086, 16.812};
+  return table[dof];
+}
+
+void check_polygons(const vrut::Specimen& sp) {
+  const auto& aggs = sp.placement.aggregates;
+  const double W = sp.settings.placement.width, H = sp.settings.placement.height;
+  for (std::size_t a = 0; a < aggs.size(); ++a) {
+    const auto& poly = aggs[a].polygon;
+    REQUIRE(poly.vertices.size() >= 4);
+    REQUIRE(poly.vertices.size() <= 10);
+    REQUIRE(vrut::is_simple(poly));
+    REQUIRE(poly.area() > 0.0);
+    for (const auto& v : poly.vertices) {
+      REQUIRE(v.x() >= 0.0);
+      REQUIRE(v.y() >= 0.0);
+      REQUIRE(v.x() <= W);
+      REQUIRE(v.y() <= H);
+    }
+    for (std::size_t b = a + 1; b < aggs.size(); ++b) REQUIRE_FALSE(vrut::polygons_overlap(poly, aggs[b].polygon));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("stereology agrees with a Monte Carlo cut through random spheres", "[specimen][stereology]") {
+  for (int g = 1; g <= 3; ++g) {
+    const vrut::Stereology st = vrut::stereology(vrut::builtin_gradation(g), {});
+    const double L = 3000.0, H = 40.0;  // mm; H > the largest sphere diameter
+    double fine = 0.0;
+    const auto mc = monte_carlo_sections(st, L, H, 1000 + g, fine);
+    for (std::size_t j = 0; j < st.classes.size(); ++j) {
+      const double expected = st.sections_per_area[j] * L * L;
+      INFO("gradation " << g << " class " << st.classes[j].lower_mm << "-" << st.classes[j].upper_mm << ": analytic "
+                        << expected << ", Monte Carlo " << mc[j]);
+      // Poisson counts: standard error sqrt(expected).
+      CHECK(std::abs(mc[j] - expected) <= 3.0 * std::sqrt(std::max(expected, 1.0)));
+    }
+    const double fine_expected = st.fine_sections_per_area * L * L;
+    CHECK(std::abs(fine - fine_expected) <= 3.0 * std::sqrt(fine_expected));
+  }
+}
+
+TEST_CASE("stereology follows the volumetrics: target area fractions of SPEC section 2", "[specimen][stereology]") {
+  const double expected[] = {0.43, 0.55, 0.67};
+  for (int g = 1; g <= 3; ++g) {
+    const vrut::Stereology st = vrut::stereology(vrut::builtin_gradation(g), {});
+    // Delesse: the coarse volume fraction G_mb (1 - AC) / G_sb (1 - pass(2.36)).
+    const double passing = vrut::builtin_gradation(g).passing.back();
+    CHECK(st.coarse_volume_fraction == Approx(2.40 * 0.952 / 2.70 * (1.0 - passing / 100.0)).epsilon(1e-12));
+    // The sections under 2.36 mm go to the mastic: a little less area.
+    CHECK(st.target_area_fraction < st.coarse_volume_fraction);
+    CHECK(st.target_area_fraction == Approx(expected[g - 1]).margin(0.005));
+  }
+}
+
+TEST_CASE("default specimens reach their targets with a valid aggregate skeleton", "[specimen]") {
+  for (int g = 1; g <= 3; ++g) {
+    vrut::SpecimenSettings s;
+    s.gradation = vrut::builtin_gradation(g);
+    s.seed = 7;
+    const vrut::Specimen sp = vrut::generate_specimen(s);
+    INFO("gradation " << g << ": aggregate area fraction " << sp.placement.achieved_fraction << " of target "
+                      << sp.placement.target_fraction);
+    CHECK(std::abs(sp.placement.achieved_fraction - sp.placement.target_fraction) <= 0.01);
+    CHECK(std::abs(sp.disks.air_void_achieved - 0.04) <= 0.001);
+    check_polygons(sp);
+
+    // Placed sizes against the 2D quantity gradation: chi-square at the 1 % level.
+    std::vector<double> observed(sp.stereology.classes.size(), 0.0), p;
+    for (const auto& a : sp.placement.aggregates) observed[a.size_class] += 1.0;
+    for (std::size_t j = 0; j < observed.size(); ++j)
+      if (sp.stereology.sections_per_area[j] > 0.0) p.push_back(sp.stereology.sections_per_area[j]);
+      else REQUIRE(observed[j] == 0.0);
+    observed.resize(p.size());
+    int dof = 0;
+    const double chi = chi_square(observed, p, dof);
+    std::printf("gradation %d: %zu aggregates, area fraction %.4f (target %.4f), chi-square %.2f (dof %d, 1%% critical %.2f)\n",
+                g, sp.placement.aggregates.size(), sp.placement.achieved_fraction, sp.placement.target_fraction, chi,
+                dof, chi_square_critical_1pct(dof));
+    CHECK(chi < chi_square_critical_1pct(dof));
+
+    // Every disk whose centre lies in a polygon belongs to it; bonds join touching disks only.
+    const double r = sp.disks.radius;
+    for (const auto& b : sp.disks.bonds) {
+      REQUIRE((sp.disks.centers[b.first] - sp.disks.centers[b.second]).norm() == Approx(2.0 * r).epsilon(1e-9));
+      const int a1 = sp.disks.aggregate[b.first], a2 = sp.disks.aggregate[b.second];
+      REQUIRE((a1 < 0 || a2 < 0 || a1 == a2));
+    }
+    for (std::size_t i = 0; i < sp.disks.centers.size(); i += 97) {
+      const int a = sp.disks.aggregate[i];
+      if (a >= 0) REQUIRE(vrut::point_in_polygon(sp.placement.aggregates[a].polygon, sp.disks.centers[i]));
+    }
+  }
+}
+
+TEST_CASE("a specimen with other shapes and seeds is valid too", "[specimen]") {
+  vrut::SpecimenSettings s;
+  s.gradation = vrut::builtin_gradation(3);
+  s.placement.shape.radius_fluctuation = 0.5;
+  s.placement.shape.angle_fluctuation = 1.0;
+  s.seed = 12345;
+  const vrut::Specimen sp = vrut::generate_specimen(s);
+  check_polygons(sp);
+  CHECK(std::abs(sp.placement.achieved_fraction - sp.placement.target_fraction) <= 0.01);
+}
+
+TEST_CASE("same seed, same specimen; another seed, another one", "[specimen]") {
+  vrut::SpecimenSettings s;
+  s.seed = 99;
+  const vrut::Specimen a = vrut::generate_specimen(s), b = vrut::generate_specimen(s);
+  REQUIRE(a.disks.centers.size() == b.disks.centers.size());
+  CHECK(a.disks.aggregate == b.disks.aggregate);
+  CHECK(a.disks.bonds == b.disks.bonds);
+  for (std::size_t k = 0; k < a.placement.aggregates.size(); ++k)
+    CHECK(a.placement.aggregates[k].polygon.vertices == b.placement.aggregates[k].polygon.vertices);
+  s.seed = 100;
+  const vrut::Specimen c = vrut::generate_specimen(s);
+  CHECK(c.disks.aggregate != a.disks.aggregate);
+}
+
+TEST_CASE("gradation files are checked line by line", "[specimen][input]") {
+  auto write = [](const std::string& text) {
+    const std::string path = "gradation_test.csv";
+    std::ofstream(path) << text;
+    return path;
+  };
+  const auto good = vrut::read_gradation_csv(write("sieve_mm,percent_passing\n19,100\n9.5,70\n2.36,34\n"));
+  CHECK(good.sieve_mm.size() == 3);
+  CHECK(good.passing_at(9.5) == 70.0);
+  CHECK_THROWS_WITH(vrut::read_gradation_csv(write("19,100\n9.5,70\n12,40\n")), Catch::Contains(":3") && Catch::Contains("decrease"));
+  CHECK_THROWS_WITH(vrut::read_gradation_csv(write("19,100\n9.5,70\n2.36,80\n")), Catch::Contains(":3") && Catch::Contains("increase"));
+  CHECK_THROWS_WITH(vrut::read_gradation_csv(write("19,100\n-9.5,70\n")), Catch::Contains(":2") && Catch::Contains("positive"));
+  CHECK_THROWS_WITH(vrut::read_gradation_csv(write("19,100\n9.5,170\n")), Catch::Contains(":2") && Catch::Contains("0..100"));
+  CHECK_THROWS_WITH(vrut::read_gradation_csv(write("19,95\n9.5,70\n")), Catch::Contains(":1") && Catch::Contains("100"));
+  CHECK_THROWS_WITH(vrut::read_gradation_csv(write("# mix\n19,100\n9.5;70\n")), Catch::Contains(":3"));
+  CHECK_THROWS_WITH(vrut::read_gradation_csv(write("19,100\n9.5,7x\n")), Catch::Contains(":2"));
+  CHECK_THROWS_WITH(vrut::read_gradation_csv("no/such/file.csv"), Catch::Contains("cannot open"));
+  CHECK_THROWS_WITH(vrut::gradation_from_name("4"), Catch::Contains("cannot open"));
+}
+
+TEST_CASE("an unreachable area fraction fails with what was reached", "[specimen][input]") {
+  vrut::SpecimenSettings s;
+  s.gradation = vrut::builtin_gradation(3);
+  s.placement.height = 5.0;  // stones of 4.75 mm and more in a 5 mm strip
+  s.placement.attempts = 200;
+  CHECK_THROWS_WITH(vrut::generate_specimen(s), Catch::Contains("cannot reach") && Catch::Contains("area fraction"));
+}
