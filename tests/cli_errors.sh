@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Bad input to an example gets a clear message and exit code 1 or 2, never a
-# crash or a hang; --help exits 0.  Usage: cli_errors.sh demo|creep EXECUTABLE
+# crash or a hang; --help exits 0.  Usage: cli_errors.sh demo|creep|specimen EXECUTABLE
 set -u
 which=$1 exe=$2
 work=$(mktemp -d)
@@ -50,6 +50,24 @@ creep)
   for f in creep.csv creep.json creep.png; do
     [[ -s "$work/taken/$f" ]] || { echo "FAIL: no $f"; failures=$((failures + 1)); }
   done
+  ;;
+specimen)
+  printf 'sieve_mm,percent_passing\n19,100\n9.5,70\n12,40\n' >"$work/bad.csv"
+  expect "1 2" "bad.csv:4" -- --gradation bad.csv --out a
+  expect "1 2" "cannot open" -- --gradation 7 --out b
+  expect "1 2" "disk-radius" -- --disk-radius-mm -0.5 --out c
+  expect "1 2" "air-voids" -- --air-voids 0.5 --out d
+  expect "1 2" "height" -- --height-mm -50 --out e
+  expect "1 2" "cannot reach" -- --gradation 3 --height-mm 5 --out f
+  for d in a b c d e f; do
+    [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
+  done
+  expect "0" "area fraction" -- --gradation 3 --seed 5 --out one
+  expect "0" "area fraction" -- --gradation 3 --seed 5 --out two
+  for f in specimen.png specimen.json specimen.vtk; do
+    if ! cmp -s "$work/one/$f" "$work/two/$f"; then echo "FAIL: $f differs between two runs"; failures=$((failures + 1)); fi
+  done
+  grep -q '"quantity_gradation"' "$work/one/specimen.json" || { echo "FAIL: no quantity_gradation"; failures=$((failures + 1)); }
   ;;
 esac
 

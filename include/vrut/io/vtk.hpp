@@ -1,0 +1,40 @@
+#pragma once
+// Legacy-format VTK files of disks (POLYDATA vertices with point data), which
+// ParaView opens directly (Glyph by "radius" to see disks). Host-only.
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vrut {
+
+struct VtkPointData {
+  std::vector<std::pair<std::string, std::vector<double>>> scalars;
+  std::vector<std::pair<std::string, std::vector<std::pair<double, double>>>> vectors;  // in-plane
+};
+
+inline void write_vtk_disks(const std::string& path, const std::string& title, const std::vector<double>& x,
+                            const std::vector<double>& y, const VtkPointData& data) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw std::runtime_error("cannot write " + path);
+  const std::size_t n = x.size();
+  std::fprintf(f, "# vtk DataFile Version 3.0\n%s\nASCII\nDATASET POLYDATA\nPOINTS %zu double\n", title.c_str(), n);
+  for (std::size_t i = 0; i < n; ++i) std::fprintf(f, "%.9g %.9g 0\n", x[i], y[i]);
+  std::fprintf(f, "VERTICES %zu %zu\n", n, 2 * n);
+  for (std::size_t i = 0; i < n; ++i) std::fprintf(f, "1 %zu\n", i);
+  std::fprintf(f, "POINT_DATA %zu\n", n);
+  for (const auto& [name, values] : data.scalars) {
+    if (values.size() != n) throw std::invalid_argument("vtk scalar " + name + " has the wrong length");
+    std::fprintf(f, "SCALARS %s double 1\nLOOKUP_TABLE default\n", name.c_str());
+    for (double v : values) std::fprintf(f, "%.9g\n", v);
+  }
+  for (const auto& [name, values] : data.vectors) {
+    if (values.size() != n) throw std::invalid_argument("vtk vector " + name + " has the wrong length");
+    std::fprintf(f, "VECTORS %s double\n", name.c_str());
+    for (const auto& v : values) std::fprintf(f, "%.9g %.9g 0\n", v.first, v.second);
+  }
+  if (std::fclose(f) != 0) throw std::runtime_error("error writing " + path);
+}
+
+}  // namespace vrut
