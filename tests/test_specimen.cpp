@@ -164,7 +164,7 @@ TEST_CASE("a specimen with other shapes and seeds is valid too", "[specimen]") {
   CHECK(std::abs(sp.placement.achieved_fraction - sp.placement.target_fraction) <= 0.01);
 }
 
-TEST_CASE("same seed, same specimen; another seed, another one", "[specimen]") {
+TEST_CASE("same seed gives the same specimen and another seed another one", "[specimen]") {
   vrut::SpecimenSettings s;
   s.seed = 99;
   const vrut::Specimen a = vrut::generate_specimen(s), b = vrut::generate_specimen(s);

@@ -2,6 +2,7 @@
 // Everything device-safe in one include.
 #include <vrut/contact/bond.hpp>
 #include <vrut/contact/burgers.hpp>
+#include <vrut/contact/choice.hpp>
 #include <vrut/contact/composite.hpp>
 #include <vrut/contact/concept.hpp>
 #include <vrut/contact/geometry.hpp>

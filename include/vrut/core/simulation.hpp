@@ -27,6 +27,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vrut {
@@ -117,6 +118,7 @@ class Simulation {
     push_walls();
   }
   int walls() const { return static_cast<int>(walls_host_.size()); }
+  void set_integrator(const integrator_params& p) { integrator_ = p; }
 
   // Bonds every disk pair whose gap is at most tolerance (m). Returns the count.
   int bond_touching_contacts(double tolerance) {
@@ -136,6 +138,35 @@ class Simulation {
               if (is_bonded<Law>(state(i, k))) ++sum;
             }
           }
+        },
+        bonded);
+    return bonded;
+  }
+
+  // Bonds the given disk pairs (each i != j), and only those, e.g. the
+  // initially touching pairs of a specimen. Returns how many were in contact
+  // range and got a bond.
+  int bond_pairs(const std::vector<std::pair<int, int>>& pairs) {
+    contacts_.rebuild(space_, particles_, settings_.skin);
+    Kokkos::View<int* [2], memory_space> dev("bond_pairs", pairs.size());
+    auto host = Kokkos::create_mirror_view(dev);
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      host(k, 0) = std::min(pairs[k].first, pairs[k].second);
+      host(k, 1) = std::max(pairs[k].first, pairs[k].second);
+    }
+    Kokkos::deep_copy(dev, host);
+    auto partner = contacts_.partner;
+    auto count = contacts_.count;
+    auto state = contacts_.state;
+    int bonded = 0;
+    Kokkos::parallel_reduce("vrut::bond_pairs", Kokkos::RangePolicy<execution_space>(space_, 0, pairs.size()),
+        KOKKOS_LAMBDA(const int k, int& sum) {
+          const int i = dev(k, 0), j = dev(k, 1);
+          for (int q = 0; q < count(i); ++q)
+            if (partner(i, q) == j) {
+              make_bonded<Law>(state(i, q));
+              if (is_bonded<Law>(state(i, q))) ++sum;
+            }
         },
         bonded);
     return bonded;

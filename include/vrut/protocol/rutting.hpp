@@ -1,0 +1,246 @@
+#pragma once
+// The virtual wheel-tracking (rutting) test, SPEC sections 1, 5 and 6:
+// specimen -> DE model with the four interactions -> mould (bottom and side
+// walls) -> settling under gravity -> a loading plate of contact length
+// l = m g / (p d) at mid-span, servo-controlled to the pressure p -> loading
+// for the cumulative time T = 60 min * l / travel, reduced by alpha_T ->
+// deformation curve, rut depth, dynamic stability.
+#include <vrut/contact/choice.hpp>
+#include <vrut/contact/composite.hpp>
+#include <vrut/core/simulation.hpp>
+#include <vrut/material/burgers_parameters.hpp>
+#include <vrut/specimen/specimen.hpp>
+
+#include <Kokkos_Core.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vrut {
+
+// The laboratory test (SPEC section 1); SI units.
+struct WheelTracking {
+  double wheel_mass = 78.0;          // kg
+  double gravity = 9.81;             // m/s^2
+  double pressure = 0.7e6;           // Pa
+  double wheel_width = 0.05;         // m, = the disk thickness t
+  double travel = 0.230;             // m, back and forth
+  double passes_per_minute = 42.0;
+  double minutes = 60.0;
+  double ds_from_minute = 45.0;      // DS between this minute and the end
+
+  double contact_length() const { return wheel_mass * gravity / (pressure * wheel_width); }
+  double loading_time() const { return minutes * 60.0 * contact_length() / travel; }  // s, cumulative under the wheel
+  double plate_force() const { return pressure * contact_length() * wheel_width; }
+
+  void validate(double section_width_m) const {
+    auto positive = [](double v, const char* what) {
+      if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument(std::string(what) + " must be positive");
+    };
+    positive(wheel_mass, "wheel mass");
+    positive(gravity, "gravity");
+    positive(pressure, "contact pressure");
+    positive(wheel_width, "wheel width");
+    positive(travel, "wheel travel");
+    positive(passes_per_minute, "passes per minute");
+    positive(minutes, "test duration");
+    if (!(ds_from_minute > 0.0 && ds_from_minute < minutes))
+      throw std::invalid_argument("the dynamic-stability start minute must lie inside the test");
+    if (!(contact_length() < section_width_m))
+      throw std::invalid_argument("the loading plate (" + std::to_string(contact_length() * 1e3) +
+                                  " mm) is longer than the specimen (" + std::to_string(section_width_m * 1e3) + " mm)");
+  }
+};
+
+struct RuttingMaterials {
+  BurgersMacro mastic;                  // at the test temperature, 60 C
+  double mastic_nu = 0.35;
+  bool calibrated_conversion = false;   // MicroConversion::calibrated instead of the SPEC's rules
+  double mastic_aggregate_factor = 1.0; // SPEC: 1 (source), 2 (two Burger's disks in series)
+  double aggregate_modulus = 55.5e9;    // Pa
+  double aggregate_nu = 0.25;
+  double mastic_density = 2400.0, aggregate_density = 2700.0;  // kg/m^3
+  double friction = 0.5;                // disk-disk, where no bond holds
+  double wall_friction = 0.0;           // mould walls and plate
+};
+
+struct RuttingNumerics {
+  double shift = 1e4;                // alpha_T
+  double timestep_safety = 0.3;
+  double damping = 0.3;              // local damping while loading
+  double settle_damping = 0.7;
+  long settle_steps = 4000;          // under gravity, before the plate comes down
+  double ramp_fraction = 0.02;       // of the loading time, for the plate force to rise
+  int samples = 240;                 // points of the deformation curve
+};
+
+struct RuttingSample {
+  double minutes = 0.0, reduced_time = 0.0, deformation = 0.0 /* m */, plate_pressure = 0.0 /* Pa */;
+};
+
+struct RuttingSnapshot {
+  double fraction = 0.0;             // of the loading time
+  std::vector<double> x, y, dx, dy;  // m: positions and displacement since loading began
+};
+
+struct RuttingResult {
+  std::vector<RuttingSample> samples;
+  std::vector<RuttingSnapshot> snapshots;  // at 1/3, 2/3 and the end of the loading
+  std::vector<double> vx, vy;              // final velocities
+  std::vector<int> group;
+  double deformation_at_ds_start = 0.0, deformation_final = 0.0;  // m
+  double dynamic_stability = 0.0;          // passes / mm
+  double plate_x0 = 0.0, plate_x1 = 0.0, plate_y_final = 0.0;     // m
+  std::size_t particles = 0;
+  int contacts = 0, bonds = 0;
+  long steps = 0;
+  double dt = 0.0, wall_seconds = 0.0;
+};
+
+using RuttingLaw = Choice<BurgersBonded, LinearBonded>;
+
+inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, double thickness, double shift) {
+  const BurgersMacro reduced = m.mastic.shifted(TimeShift(shift));
+  const MicroConversion conv = m.calibrated_conversion ? MicroConversion::calibrated(m.mastic_nu) : MicroConversion::seed();
+  AssignmentTable<RuttingLaw> table(2);
+  table.set(mastic_group, mastic_group, RuttingLaw::make_first(mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0, m.friction)));
+  table.set(mastic_group, aggregate_group,
+            RuttingLaw::make_first(mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction)));
+  table.set(aggregate_group, aggregate_group,
+            RuttingLaw::make_second(aggregate_params(m.aggregate_modulus, thickness, m.aggregate_nu, m.friction)));
+  return table;
+}
+
+// progress(fraction of the loading time done, steps done).
+template <class Space>
+RuttingResult run_rutting(const Specimen& sp, const WheelTracking& wt, const RuttingMaterials& mat,
+                          const RuttingNumerics& num, const Space& space = Space(),
+                          const std::function<void(double, long)>& progress = {}) {
+  const double width = sp.settings.placement.width * 1e-3, height = sp.settings.placement.height * 1e-3;
+  wt.validate(width);
+  if (!(num.timestep_safety > 0.0 && num.timestep_safety <= 1.0)) throw std::invalid_argument("time-step safety must lie in (0, 1]");
+  if (num.samples < 10) throw std::invalid_argument("at least 10 samples");
+  const double t = wt.wheel_width;
+  const auto table = rutting_table(mat, t, num.shift);
+  SimulationSettings settings;
+  settings.thickness = t;
+  settings.gravity = {0.0, -wt.gravity};
+  CentralDifference::params_type integrator;
+  integrator.damping = num.settle_damping;
+  Simulation<RuttingLaw, Space, CentralDifference, ServoControl> sim(
+      to_particle_set(sp, mat.mastic_density, mat.aggregate_density), table, settings, integrator, space);
+  RuttingResult res;
+  res.bonds = sim.bond_pairs(sp.disks.bonds);
+  res.particles = sim.particles().size();
+
+  // The mould: bottom and both sides, linear and (by default) frictionless.
+  const double k_wall = aggregate_params(mat.aggregate_modulus, t, mat.aggregate_nu).normal.stiffness;
+  const auto wall_law = linear_params(k_wall, k_wall / (2.0 * (1.0 + mat.aggregate_nu)), mat.wall_friction);
+  sim.add_wall(Wall{{0.0, 0.0}, {width, 0.0}, {}}, wall_law);
+  sim.add_wall(Wall{{0.0, 2.0 * height}, {0.0, 0.0}, {}}, wall_law);
+  sim.add_wall(Wall{{width, 0.0}, {width, 2.0 * height}, {}}, wall_law);
+  const double dt = num.timestep_safety * sim.critical_timestep();
+  res.dt = dt;
+
+  // Settling under gravity.
+  sim.run(num.settle_steps, dt);
+
+  // The plate, on the highest disk under it; the servo brings it down.
+  const double l = wt.contact_length();
+  res.plate_x0 = 0.5 * (width - l);
+  res.plate_x1 = 0.5 * (width + l);
+  auto host_x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  const double r = sp.disks.radius * 1e-3;
+  double top = 0.0;
+  for (std::size_t i = 0; i < host_x.extent(0); ++i)
+    if (host_x(i).x + r > res.plate_x0 && host_x(i).x - r < res.plate_x1) top = std::max(top, host_x(i).y + r);
+  const double t_load = wt.loading_time() / num.shift;
+  const long steps = static_cast<long>(std::ceil(t_load / dt));
+  const long ramp_steps = std::max(1L, static_cast<long>(num.ramp_fraction * steps));
+  auto servo = [&](double force) {
+    auto p = ServoControl::for_stress(force / (l * t), l, t, k_wall, 0.2, 1e-3 * height / dt);
+    return p;
+  };
+  const int plate = sim.add_wall(Wall{{res.plate_x1, top}, {res.plate_x0, top}, {}}, wall_law, servo(0.0));
+  CentralDifference::params_type loading;
+  loading.damping = num.damping;
+  sim.set_integrator(loading);
+
+  Kokkos::View<Vec2*, typename Space::memory_space> start("loading_start", res.particles);
+  Kokkos::deep_copy(start, sim.particles().position);
+  auto snapshot = [&](double fraction) {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+    auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), start);
+    RuttingSnapshot s;
+    s.fraction = fraction;
+    for (std::size_t i = 0; i < x.extent(0); ++i) {
+      s.x.push_back(x(i).x);
+      s.y.push_back(x(i).y);
+      s.dx.push_back(x(i).x - x0(i).x);
+      s.dy.push_back(x(i).y - x0(i).y);
+    }
+    res.snapshots.push_back(std::move(s));
+  };
+
+  const double to_minutes = wt.minutes / t_load;
+  const auto begin = std::chrono::steady_clock::now();
+  int next_sample = 1, next_snapshot = 1;
+  for (long s = 1; s <= steps; ++s) {
+    if (s <= ramp_steps && (s % 50 == 1 || s == ramp_steps))
+      sim.set_controller(plate, servo(wt.plate_force() * std::min(1.0, static_cast<double>(s) / ramp_steps)));
+    sim.step(dt);
+    const double time = s * dt;
+    if (next_sample <= num.samples && (time >= t_load * next_sample / num.samples - 0.5 * dt || s == steps)) {
+      const Wall w = sim.wall(plate);
+      RuttingSample smp;
+      smp.reduced_time = time;
+      smp.minutes = time * to_minutes;
+      smp.deformation = top - w.start.y;
+      smp.plate_pressure = ServoControl::compressive_force(w, sim.wall_load(plate)) / (l * t);
+      res.samples.push_back(smp);
+      ++next_sample;
+      if (progress) progress(time / t_load, s);
+    }
+    if (next_snapshot <= 3 && (s >= steps * next_snapshot / 3)) {
+      snapshot(next_snapshot / 3.0);
+      ++next_snapshot;
+    }
+  }
+  Kokkos::fence();
+  res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  res.steps = steps;
+  res.contacts = sim.active_contacts();
+  res.plate_y_final = sim.wall(plate).start.y;
+  auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().velocity);
+  auto g = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().group);
+  for (std::size_t i = 0; i < v.extent(0); ++i) {
+    res.vx.push_back(v(i).x);
+    res.vy.push_back(v(i).y);
+    res.group.push_back(g(i));
+  }
+
+  // Deformation at the DS start minute (interpolated) and at the end.
+  auto deformation_at = [&](double minute) {
+    for (std::size_t k = 1; k < res.samples.size(); ++k)
+      if (res.samples[k].minutes >= minute) {
+        const auto& a = res.samples[k - 1];
+        const auto& b = res.samples[k];
+        return a.deformation + (minute - a.minutes) / (b.minutes - a.minutes) * (b.deformation - a.deformation);
+      }
+    return res.samples.back().deformation;
+  };
+  res.deformation_at_ds_start = deformation_at(wt.ds_from_minute);
+  res.deformation_final = res.samples.back().deformation;
+  const double dd_mm = (res.deformation_final - res.deformation_at_ds_start) * 1e3;
+  res.dynamic_stability = dd_mm > 0.0 ? (wt.minutes - wt.ds_from_minute) * wt.passes_per_minute / dd_mm
+                                       : std::numeric_limits<double>::infinity();
+  return res;
+}
+
+}  // namespace vrut
