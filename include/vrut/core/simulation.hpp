@@ -219,6 +219,12 @@ class Simulation {
     auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), wall_total_);
     return h(w);
   }
+  // Time integral of the load on wall w since it was added (N s): the mean
+  // load over an interval is the difference of two readings over its length.
+  Vec2 wall_impulse(int w) const {
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), wall_impulse_);
+    return h(w);
+  }
   // Counts of touching (or bonded) contacts and of intact bonds.
   int active_contacts() const { return count_contacts(false); }
   int intact_bonds() const { return count_contacts(true); }
@@ -347,6 +353,7 @@ class Simulation {
         });
     auto wall_view = walls_;
     auto total = wall_total_;
+    auto impulse = wall_impulse_;
     auto control = control_;
     auto control_state = control_state_;
     Kokkos::parallel_for("vrut::move_walls", Kokkos::RangePolicy<execution_space>(space_, 0, nwalls),
@@ -354,6 +361,7 @@ class Simulation {
           WallLoad sum;
           for (int b = 0; b < blocks; ++b) sum += bl(b, w);
           total(w) = sum;
+          impulse(w) += dt * sum.force;
           Wall wall = wall_view(w);
           Controller::control(control(w), control_state(w), wall, sum, dt);
           wall.start += dt * wall.velocity;
@@ -394,6 +402,7 @@ class Simulation {
                         control_state_);
     control_state_ = control_state;
     wall_total_ = Kokkos::View<WallLoad*, memory_space>("wall_total", nwalls);
+    wall_impulse_ = Kokkos::View<Vec2*, memory_space>("wall_impulse", nwalls);
     // Contact state with walls: keep what the existing walls had.
     Kokkos::View<wall_state_type**, memory_space> state("wall_state", n, nwalls);
     if (wall_state_.extent(1) > 0) {
@@ -445,6 +454,7 @@ class Simulation {
   Kokkos::View<wall_state_type**, memory_space> wall_state_;
   Kokkos::View<WallLoad**, memory_space> wall_load_, block_load_;
   Kokkos::View<WallLoad*, memory_space> wall_total_;
+  Kokkos::View<Vec2*, memory_space> wall_impulse_;
 
   double time_ = 0.0;
   long steps_ = 0;

@@ -1,0 +1,255 @@
+// vrut-rutting: the virtual wheel-tracking test of an asphalt mixture, from
+// its gradation and binder properties to the rut depth and dynamic stability.
+#include "common/draw.hpp"
+#include "common/specimen_cli.hpp"
+
+#include <vrut/backend.hpp>
+#include <vrut/io/output_dir.hpp>
+#include <vrut/io/plot.hpp>
+#include <vrut/io/progress.hpp>
+#include <vrut/io/vtk.hpp>
+#include <vrut/protocol/rutting.hpp>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+namespace {
+
+// The deformed specimen at one moment: disks where they are, stones and
+// mastic in their colours, the plate in red.
+void snapshot_panel(draw::Canvas& c, const vrut::Specimen& sp, const vrut::RuttingSnapshot& s, double y_offset_mm,
+                    const vrut::RuttingResult& res, double plate_y_mm) {
+  const double r = sp.disks.radius;
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    const int a = sp.disks.aggregate[i];
+    c.disk(s.x[i] * 1e3, s.y[i] * 1e3 + y_offset_mm, r, a >= 0 ? draw::stone(a) : draw::Rgb{0.22, 0.22, 0.22});
+  }
+  c.rectangle(res.plate_x0 * 1e3, plate_y_mm + y_offset_mm, (res.plate_x1 - res.plate_x0) * 1e3, 1.5,
+              {0.8, 0.1, 0.1});
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace specimen_cli;
+  SpecimenOptions so;
+  so.disk_radius_mm = 1.0;  // the rutting default: a full test in minutes on 2 cores (docs/rutting.md)
+  vrut::WheelTracking wt;
+  vrut::RuttingMaterials mat;
+  vrut::RuttingNumerics num;
+  std::string backend = "openmp", out = "out/rutting", conversion = "seed";
+  int threads = 0;
+  bool force = false;
+  double e1 = mat.mastic.E1 * 1e-6, eta1 = mat.mastic.eta1 * 1e-6, e2 = mat.mastic.E2 * 1e-6,
+         eta2 = mat.mastic.eta2 * 1e-6;
+  double pressure_mpa = wt.pressure * 1e-6, wheel_width_mm = wt.wheel_width * 1e3, travel_mm = wt.travel * 1e3;
+  double aggregate_gpa = mat.aggregate_modulus * 1e-9;
+
+  CLI::App app("vrut-rutting: virtual wheel-tracking (rutting) test of an asphalt mixture, DEM with Burger's mastic");
+  app.set_config("--config", "", "read options from this file (INI/TOML, as written to DIR/config.ini)");
+  app.allow_config_extras(false);  // an unknown key in a config file is an error
+  add_specimen_options(app, so);
+  app.add_option("--E1", e1, "mastic Maxwell modulus at 60 C, MPa")->capture_default_str()->group("Materials");
+  app.add_option("--eta1", eta1, "mastic Maxwell viscosity, MPa s")->capture_default_str()->group("Materials");
+  app.add_option("--E2", e2, "mastic Kelvin modulus, MPa")->capture_default_str()->group("Materials");
+  app.add_option("--eta2", eta2, "mastic Kelvin viscosity, MPa s")->capture_default_str()->group("Materials");
+  app.add_option("--mastic-nu", mat.mastic_nu, "Poisson's ratio of the mastic")->capture_default_str()->group("Materials");
+  app.add_option("--conversion", conversion, "micro parameters: seed (SPEC rules) or calibrated (docs/burgers.md)")
+      ->check(CLI::IsMember({"seed", "calibrated"}))->capture_default_str()->group("Materials");
+  app.add_option("--mastic-aggregate-factor", mat.mastic_aggregate_factor,
+                 "mastic-aggregate contacts get this times the mastic-mastic values")
+      ->check(CLI::PositiveNumber)->capture_default_str()->group("Materials");
+  app.add_option("--aggregate-modulus-gpa", aggregate_gpa, "aggregate Young's modulus")->check(CLI::PositiveNumber)
+      ->capture_default_str()->group("Materials");
+  app.add_option("--aggregate-nu", mat.aggregate_nu, "aggregate Poisson's ratio")->capture_default_str()->group("Materials");
+  app.add_option("--mastic-density", mat.mastic_density, "kg/m^3")->check(CLI::PositiveNumber)->capture_default_str()
+      ->group("Materials");
+  app.add_option("--aggregate-density", mat.aggregate_density, "kg/m^3")->check(CLI::PositiveNumber)
+      ->capture_default_str()->group("Materials");
+  app.add_option("--friction", mat.friction, "disk-disk friction where no bond holds")->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str()->group("Materials");
+  app.add_option("--wall-friction", mat.wall_friction, "mould and plate friction")->check(CLI::Range(0.0, 10.0))
+      ->capture_default_str()->group("Materials");
+  app.add_option("--pressure-mpa", pressure_mpa, "wheel contact pressure p")->capture_default_str()->group("Loading");
+  app.add_option("--wheel-mass-kg", wt.wheel_mass, "wheel mass m")->capture_default_str()->group("Loading");
+  app.add_option("--wheel-width-mm", wheel_width_mm, "wheel width d (= disk thickness t)")->capture_default_str()
+      ->group("Loading");
+  app.add_option("--travel-mm", travel_mm, "wheel travel")->capture_default_str()->group("Loading");
+  app.add_option("--passes-per-minute", wt.passes_per_minute, "N")->capture_default_str()->group("Loading");
+  app.add_option("--minutes", wt.minutes, "test duration")->capture_default_str()->group("Loading");
+  app.add_option("--shift", num.shift, "time-temperature shift factor alpha_T")->capture_default_str()->group("Numerics");
+  app.add_option("--timestep-safety", num.timestep_safety, "fraction of the critical time step")
+      ->check(CLI::Range(1e-3, 1.0))->capture_default_str()->group("Numerics");
+  app.add_option("--damping", num.damping, "local damping while loading")->check(CLI::Range(0.0, 0.99))
+      ->capture_default_str()->group("Numerics");
+  app.add_option("--settle-steps", num.settle_steps, "steps of settling under gravity")
+      ->check(CLI::Range(0L, 100000000L))->capture_default_str()->group("Numerics");
+  app.add_option("--samples", num.samples, "points of the deformation curve")->check(CLI::Range(10, 100000))
+      ->capture_default_str()->group("Numerics");
+  app.add_option("--backend", backend, "Kokkos backend")->check(CLI::IsMember(vrut::available_backends()))
+      ->capture_default_str()->group("Numerics");
+  app.add_option("--threads", threads, "host threads (0: OMP_NUM_THREADS)")->check(CLI::Range(0, 1024))
+      ->capture_default_str()->group("Numerics");
+  app.add_option("--out", out, "output folder")->capture_default_str();
+  app.add_flag("--force", force, "overwrite an existing output folder");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+
+  try {
+    vrut::OutputDir dir(out, force);
+    mat.mastic = {e1 * 1e6, eta1 * 1e6, e2 * 1e6, eta2 * 1e6};
+    mat.calibrated_conversion = conversion == "calibrated";
+    mat.aggregate_modulus = aggregate_gpa * 1e9;
+    wt.pressure = pressure_mpa * 1e6;
+    wt.wheel_width = wheel_width_mm * 1e-3;
+    wt.travel = travel_mm * 1e-3;
+    vrut::SpecimenSettings ss = to_settings(so);
+    // Everything checkable is checked before the specimen is made.
+    mat.mastic.validate();
+    vrut::validate_poisson(mat.mastic_nu);
+    vrut::validate_poisson(mat.aggregate_nu);
+    vrut::TimeShift{num.shift};
+    wt.validate(ss.placement.width * 1e-3);
+    std::ofstream(dir.file("config.ini")) << app.config_to_str(true, true);
+
+    vrut::Specimen sp;
+    try {
+      sp = vrut::generate_specimen(ss);
+    } catch (const std::runtime_error& e) {
+      std::cerr << "error: " << e.what() << '\n';
+      return 1;
+    }
+    std::fprintf(stderr, "specimen: gradation %s, %zu disks, %zu aggregates; plate %.2f mm, loading %.1f s (%.4g s reduced)\n",
+                 ss.gradation.name.c_str(), sp.disks.centers.size(), sp.placement.aggregates.size(),
+                 wt.contact_length() * 1e3, wt.loading_time(), wt.loading_time() / num.shift);
+
+    vrut::KokkosSession kokkos(threads);
+    int used_threads = 1;
+    vrut::ProgressBar bar("loading", 1000, "permille");
+    const vrut::RuttingResult res = vrut::dispatch_backend(backend, [&](auto space) {
+      used_threads = vrut::concurrency(space);
+      return vrut::run_rutting(sp, wt, mat, num, space,
+                               [&](double fraction, long) { bar.update(static_cast<long>(1000 * fraction)); });
+    });
+    bar.finish();
+
+    // deformation.csv and .png
+    std::ofstream csv(dir.file("deformation.csv"));
+    csv << "minutes,reduced_time_s,deformation_mm,plate_pressure_mpa\n";
+    std::vector<double> minutes, deformation;
+    for (const auto& s : res.samples) {
+      csv << s.minutes << ',' << s.reduced_time << ',' << s.deformation * 1e3 << ',' << s.plate_pressure * 1e-6 << '\n';
+      minutes.push_back(s.minutes);
+      deformation.push_back(s.deformation * 1e3);
+    }
+    csv.close();
+    vrut::PlotSpec spec;
+    spec.title = "Virtual wheel-tracking test, gradation " + ss.gradation.name;
+    spec.xlabel = "test time (min)";
+    spec.ylabel = "deformation (mm)";
+    vrut::write_plot_png(dir.file("deformation.png").string(), spec, {{"rut depth under the plate", minutes, deformation}});
+
+    // Pictures: the specimen, the rut forming, the displacement field.
+    draw::specimen_png(sp, dir.file("specimen.png").string());
+    const double W = ss.placement.width, H = ss.placement.height;
+    {
+      const double panel = H + 12.0;  // a strip for the label above each panel
+      draw::Canvas c(W, 3 * panel, 5.0);
+      const double plate_top = res.plate_y_final * 1e3;
+      for (std::size_t k = 0; k < res.snapshots.size(); ++k) {
+        const double offset = (2 - static_cast<double>(k)) * panel;
+        const auto& s = res.snapshots[k];
+        // Plate height at this moment: from the deformation curve.
+        const double when = s.fraction * wt.minutes;
+        double def = deformation.back();
+        for (std::size_t q = 0; q < minutes.size(); ++q)
+          if (minutes[q] >= when) { def = deformation[q]; break; }
+        snapshot_panel(c, sp, s, offset, res, plate_top + deformation.back() - def);
+        char label[128];
+        std::snprintf(label, sizeof label, "%.0f min: rut %.2f mm", when, def);
+        c.text(2.0, offset + H + 5.0, label, 16.0);
+      }
+      c.save(dir.file("rut_forming.png").string());
+    }
+    {
+      const auto& end = res.snapshots.back();
+      draw::Canvas c(W, H + 12.0, 6.0);
+      double dmax = 1e-12;
+      for (std::size_t i = 0; i < end.x.size(); ++i) dmax = std::max(dmax, std::hypot(end.dx[i], end.dy[i]));
+      for (std::size_t i = 0; i < end.x.size(); ++i)
+        c.disk(end.x[i] * 1e3, end.y[i] * 1e3, sp.disks.radius, draw::heat(std::hypot(end.dx[i], end.dy[i]) / dmax));
+      // Vectors on a coarse grid, scaled so the largest is 8 mm long.
+      const double every = std::max(1.0, std::floor(end.x.size() / 600.0));
+      for (std::size_t i = 0; i < end.x.size(); i += static_cast<std::size_t>(every))
+        c.arrow(end.x[i] * 1e3, end.y[i] * 1e3, end.dx[i] / dmax * 8.0, end.dy[i] / dmax * 8.0, {0, 0, 0}, 1.0);
+      char label[160];
+      std::snprintf(label, sizeof label, "|u| at the end: 0 (blue) to %.2f mm (red); longest arrow 8 mm", dmax * 1e3);
+      c.text(2.0, H + 6.0, label, 14.0);
+      c.save(dir.file("displacement.png").string());
+    }
+
+    // VTK of the final state.
+    {
+      const auto& end = res.snapshots.back();
+      std::vector<double> group(res.group.begin(), res.group.end()), radius(end.x.size(), sp.disks.radius * 1e-3);
+      std::vector<std::pair<double, double>> disp, vel;
+      for (std::size_t i = 0; i < end.x.size(); ++i) {
+        disp.emplace_back(end.dx[i], end.dy[i]);
+        vel.emplace_back(res.vx[i], res.vy[i]);
+      }
+      vrut::VtkPointData data;
+      data.scalars = {{"radius", radius}, {"group", group}};
+      data.vectors = {{"displacement", disp}, {"velocity", vel}};
+      vrut::write_vtk_disks(dir.file("final.vtk").string(), "vrut rutting final state (m); group 0 mastic, 1 aggregate",
+                            end.x, end.y, data);
+    }
+
+    nlohmann::json j;
+    j["gradation"] = ss.gradation.name;
+    j["seed"] = ss.seed;
+    j["disk_radius_mm"] = sp.disks.radius;
+    j["shift_factor"] = num.shift;
+    j["conversion"] = conversion;
+    j["particles"] = res.particles;
+    j["bonds"] = res.bonds;
+    j["contacts"] = res.contacts;
+    j["steps"] = res.steps;
+    j["reduced_dt_s"] = res.dt;
+    j["wall_seconds"] = res.wall_seconds;
+    j["backend"] = backend;
+    j["threads"] = used_threads;
+    j["particle_steps_per_second"] = res.particles * static_cast<double>(res.steps) / res.wall_seconds;
+    j["contact_length_mm"] = wt.contact_length() * 1e3;
+    j["loading_time_s"] = wt.loading_time();
+    j["deformation_45min_mm"] = res.deformation_at_ds_start * 1e3;
+    j["deformation_60min_mm"] = res.deformation_final * 1e3;
+    j["rut_depth_mm"] = res.deformation_final * 1e3;
+    j["dynamic_stability_passes_per_mm"] = res.dynamic_stability;
+    j["specimen"] = specimen_summary(sp);
+    std::ofstream(dir.file("summary.json")) << j.dump(2) << '\n';
+    dir.commit();
+    std::printf("gradation %s: rut depth %.2f mm at %.0f min, dynamic stability %.0f passes/mm "
+                "(%zu disks, %ld steps, %.0f s, %.3g particle-steps/s)\nresults in %s\n",
+                ss.gradation.name.c_str(), res.deformation_final * 1e3, wt.minutes, res.dynamic_stability, res.particles,
+                res.steps, res.wall_seconds, j["particle_steps_per_second"].get<double>(), out.c_str());
+    return 0;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return 1;
+  }
+}

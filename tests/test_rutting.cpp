@@ -1,0 +1,80 @@
+// A small, fast version of the whole rutting protocol: a 60 x 30 mm section
+// of 1 mm disks of mix 2#.
+#include "spaces.hpp"
+
+#include <vrut/protocol/rutting.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+namespace {
+
+vrut::Specimen small_specimen() {
+  vrut::SpecimenSettings s;
+  s.placement.width = 60.0;
+  s.placement.height = 30.0;
+  s.disk_radius = 1.0;
+  s.seed = 3;
+  return vrut::generate_specimen(s);
+}
+
+vrut::RuttingNumerics small_numerics(double shift) {
+  vrut::RuttingNumerics n;
+  n.shift = shift;
+  n.settle_steps = 1000;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("a small rutting test gives a sane deformation curve", "[rutting]") {
+  const vrut::Specimen sp = small_specimen();
+  const vrut::RuttingResult res =
+      vrut::run_rutting<Kokkos::DefaultHostExecutionSpace>(sp, {}, {}, small_numerics(1e4));
+  REQUIRE(res.samples.size() == 240);
+  CHECK(res.samples.back().minutes == Approx(60.0).epsilon(1e-3));
+  CHECK(res.bonds > 0);
+  double worst_pressure = 0.0, worst_backstep = 0.0;
+  for (std::size_t k = 1; k < res.samples.size(); ++k) {
+    const auto& s = res.samples[k];
+    // The load rises over the first 2 % of the test; give it 5 minutes.
+    if (s.minutes > 5.0) worst_pressure = std::max(worst_pressure, std::abs(s.plate_pressure / 0.7e6 - 1.0));
+    worst_backstep = std::max(worst_backstep, res.samples[k - 1].deformation - s.deformation);
+  }
+  std::printf("small rutting test: rut %.2f mm, DS %.0f passes/mm, worst pressure error %.4f, worst back-step %.2e m\n",
+              res.deformation_final * 1e3, res.dynamic_stability, worst_pressure, worst_backstep);
+  CHECK(worst_pressure < 0.02);
+  CHECK(worst_backstep <= 1e-5);  // monotone, to 0.01 mm of rebound
+  CHECK(res.deformation_final > res.deformation_at_ds_start);
+  CHECK(res.deformation_at_ds_start > 0.0);
+  CHECK(std::isfinite(res.dynamic_stability));
+  CHECK(res.dynamic_stability > 0.0);
+  CHECK(res.snapshots.size() == 3);
+}
+
+#if defined(KOKKOS_ENABLE_SERIAL) && defined(KOKKOS_ENABLE_OPENMP)
+TEST_CASE("Serial and OpenMP give the same rutting deformation", "[rutting][backends]") {
+  const vrut::Specimen sp = small_specimen();
+  const auto serial = vrut::run_rutting<Kokkos::Serial>(sp, {}, {}, small_numerics(1e5));
+  const auto openmp = vrut::run_rutting<Kokkos::OpenMP>(sp, {}, {}, small_numerics(1e5));
+  REQUIRE(serial.samples.size() == openmp.samples.size());
+  double worst = 0.0;
+  for (std::size_t k = 0; k < serial.samples.size(); ++k)
+    worst = std::max(worst, std::abs(serial.samples[k].deformation - openmp.samples[k].deformation) /
+                                std::max(std::abs(serial.samples[k].deformation), 1e-9));
+  INFO("largest relative difference " << worst);
+  CHECK(worst <= 1e-9);
+}
+#endif
+
+TEST_CASE("the loading follows SPEC section 1", "[rutting][unit]") {
+  const vrut::WheelTracking wt;
+  CHECK(wt.contact_length() * 1e3 == Approx(21.86).epsilon(1e-3));
+  CHECK(wt.loading_time() == Approx(342.2).epsilon(1e-3));
+  CHECK(wt.plate_force() == Approx(765.0).epsilon(1e-3));
+  CHECK_THROWS_WITH(wt.validate(0.02), Catch::Contains("longer than the specimen"));
+  vrut::WheelTracking bad;
+  bad.pressure = -0.7e6;
+  CHECK_THROWS_WITH(bad.validate(0.3), Catch::Contains("pressure"));
+}
