@@ -2,6 +2,8 @@
 // The demonstration job: a bonded hex-packed block of disks compressed by a
 // servo-controlled plate to a target stress. Generic in the contact law, so a
 // user-written law plugs in (see custom_law/).
+#include "common/cli.hpp"
+
 #include <vrut/backend.hpp>
 #include <vrut/io/output_dir.hpp>
 #include <vrut/io/progress.hpp>
@@ -52,15 +54,7 @@ inline int parse(int argc, char** argv, Options& opts, const std::string& descri
   app.add_option("--steps", opts.steps, "time steps")->check(CLI::Range(1L, 100000000L))->capture_default_str();
   app.add_option("--out", opts.out, "output folder")->capture_default_str();
   app.add_flag("--force", opts.force, "overwrite an existing output folder");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
-  return -1;
+  return cli::parse(app, argc, argv);
 }
 
 // Material constants of the demonstration block (aggregate-like disks).
@@ -127,7 +121,7 @@ nlohmann::json compress(const Options& o, const vrut::AssignmentTable<Law>& tabl
 // Everything main does after parsing: output folder check, Kokkos, dispatch.
 template <class Law, class MakeTable>
 int run(const Options& o, const Material& mat, MakeTable make_table, const std::string& law_name) {
-  try {
+  return cli::guarded([&] {
     vrut::OutputDir dir(o.out, o.force);
     vrut::KokkosSession kokkos(o.threads);
     const vrut::AssignmentTable<Law> table = make_table();
@@ -145,13 +139,7 @@ int run(const Options& o, const Material& mat, MakeTable make_table, const std::
                 j["particle_steps_per_second"].get<double>(), o.backend.c_str());
     std::printf("results in %s/summary.json and compression.csv\n", o.out.c_str());
     return 0;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return 1;
-  }
+  });
 }
 
 }  // namespace demo

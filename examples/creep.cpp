@@ -1,5 +1,6 @@
 // vrut-creep: virtual uniaxial creep test of an all-mastic, bonded, hex-packed
 // block under a constant plate stress, against the macro Burger's model.
+#include "common/cli.hpp"
 #include <vrut/backend.hpp>
 #include <vrut/io/output_dir.hpp>
 #include <vrut/io/plot.hpp>
@@ -50,16 +51,9 @@ int main(int argc, char** argv) {
   app.add_option("--points", cs.points, "samples written")->check(CLI::Range(2, 100000))->capture_default_str();
   app.add_option("--out", out, "output folder")->capture_default_str();
   app.add_flag("--force", force, "overwrite an existing output folder");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
+  if (const int code = cli::parse(app, argc, argv); code >= 0) return code;
 
-  try {
+  return cli::guarded([&] {
     cs.radius = radius_mm * 1e-3;
     cs.thickness = thickness_mm * 1e-3;
     cs.stress = stress_mpa * 1e6;
@@ -142,11 +136,5 @@ int main(int argc, char** argv) {
     std::printf("%zu disks, %ld steps, %.1f s; results in %s\n", res.particles, res.steps, res.wall_seconds,
                 out.c_str());
     return 0;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return 1;
-  }
+  });
 }

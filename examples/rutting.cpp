@@ -1,5 +1,6 @@
 // vrut-rutting: the virtual wheel-tracking test of an asphalt mixture, from
 // its gradation and binder properties to the rut depth and dynamic stability.
+#include "common/cli.hpp"
 #include "common/draw.hpp"
 #include "common/specimen_cli.hpp"
 
@@ -98,16 +99,9 @@ int main(int argc, char** argv) {
       ->capture_default_str()->group("Numerics");
   app.add_option("--out", out, "output folder")->capture_default_str();
   app.add_flag("--force", force, "overwrite an existing output folder");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
+  if (const int code = cli::parse(app, argc, argv); code >= 0) return code;
 
-  try {
+  return cli::guarded([&] {
     vrut::OutputDir dir(out, force);
     mat.mastic = {e1 * 1e6, eta1 * 1e6, e2 * 1e6, eta2 * 1e6};
     mat.calibrated_conversion = conversion == "calibrated";
@@ -245,11 +239,5 @@ int main(int argc, char** argv) {
                 ss.gradation.name.c_str(), res.deformation_final * 1e3, wt.minutes, res.dynamic_stability, res.particles,
                 res.steps, res.wall_seconds, j["particle_steps_per_second"].get<double>(), out.c_str());
     return 0;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return 1;
-  }
+  });
 }

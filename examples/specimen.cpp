@@ -1,5 +1,6 @@
 // vrut-specimen: generates a digital asphalt specimen from a gradation and
 // writes its picture, its statistics and a VTK file of the disks.
+#include "common/cli.hpp"
 #include "common/draw.hpp"
 #include "common/specimen_cli.hpp"
 
@@ -23,17 +24,10 @@ int main(int argc, char** argv) {
   add_specimen_options(app, o);
   app.add_option("--out", out, "output folder")->capture_default_str();
   app.add_flag("--force", force, "overwrite an existing output folder");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return 2;
-  }
-  vrut::Specimen sp;
-  try {
+  if (const int code = cli::parse(app, argc, argv); code >= 0) return code;
+  return cli::guarded([&] {
     vrut::OutputDir dir(out, force);
+    vrut::Specimen sp;
     const auto start = std::chrono::steady_clock::now();
     try {
       sp = vrut::generate_specimen(to_settings(o));
@@ -53,11 +47,5 @@ int main(int argc, char** argv) {
                 sp.placement.target_fraction, sp.disks.centers.size(), sp.aggregate_disks(),
                 sp.disks.air_void_achieved, seconds, out.c_str());
     return 0;
-  } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << '\n';
-    return 1;
-  }
+  });
 }

@@ -20,6 +20,11 @@ struct ContactGeometry {
   double radius_1 = 0.0, radius_2 = 0.0;  // radius_2 == 0 for a wall
 };
 
+// v limited to [-limit, limit]: the Coulomb slider of the shear slots.
+KOKKOS_INLINE_FUNCTION double clamp_magnitude(double v, double limit) {
+  return v > limit ? limit : (v < -limit ? -limit : v);
+}
+
 struct ContactForce {
   double normal = 0.0;  // > 0 compression
   double shear = 0.0;   // on the second body, along the tangent

@@ -27,9 +27,7 @@ struct LinearShear {
   }
   // Coulomb cap: the stored force slides back to the limit, so unloading starts from there.
   KOKKOS_INLINE_FUNCTION static double limit(const params_type&, state_type& s, double max_abs) {
-    if (s.force > max_abs) s.force = max_abs;
-    else if (s.force < -max_abs) s.force = -max_abs;
-    return s.force;
+    return s.force = clamp_magnitude(s.force, max_abs);
   }
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) { return p.stiffness; }
 };

@@ -1,6 +1,7 @@
 #pragma once
 // Wall controllers: policies that set a wall's velocity once per step from
 // the load the disks put on it.
+#include <vrut/contact/geometry.hpp>
 #include <vrut/core/walls.hpp>
 #include <vrut/integrate/central_difference.hpp>
 
@@ -55,17 +56,14 @@ struct ServoControl {
     return -dot(load.force, inward_normal(w));
   }
 
-  KOKKOS_INLINE_FUNCTION static double clamp(double v, double limit) {
-    return v > limit ? limit : (v < -limit ? -limit : v);
-  }
-
   KOKKOS_INLINE_FUNCTION static void control(const params_type& p, state_type& s, Wall& w, const WallLoad& load,
                                              double dt) {
     if (!p.enabled) return;
     const double contacts = load.contacts > 1.0 ? load.contacts : 1.0;
     const double error = (p.target_force - compressive_force(w, load)) / (p.contact_stiffness * contacts);
-    if (load.contacts > 0.0) s.velocity = clamp(s.velocity + p.integral * p.alpha * error / dt, p.max_speed);
-    w.velocity = clamp(p.alpha * error / dt + s.velocity, p.max_speed) * inward_normal(w);
+    if (load.contacts > 0.0)
+      s.velocity = clamp_magnitude(s.velocity + p.integral * p.alpha * error / dt, p.max_speed);
+    w.velocity = clamp_magnitude(p.alpha * error / dt + s.velocity, p.max_speed) * inward_normal(w);
   }
 };
 
