@@ -1,6 +1,7 @@
 // A small, fast version of the whole rutting protocol: a 60 x 30 mm section
 // of 1 mm disks of mix 2#.
 #include "spaces.hpp"
+#include "specimen_checks.hpp"
 
 #include <vrut/protocol/rutting.hpp>
 
@@ -16,7 +17,9 @@ vrut::Specimen small_specimen() {
   s.placement.height = 30.0;
   s.disk_radius = 1.0;
   s.seed = 3;
-  return vrut::generate_specimen(s);
+  vrut::Specimen sp = vrut::generate_specimen(s);
+  vrut_test::check_polygons(sp);
+  return sp;
 }
 
 vrut::RuttingNumerics small_numerics(double shift) {

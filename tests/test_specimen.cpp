@@ -1,5 +1,7 @@
 // The digital specimen: stereology against a Monte Carlo experiment, the
 // placed aggregates against the 2D gradation, shapes, voids, reproducibility.
+#include "specimen_checks.hpp"
+
 #include <vrut/specimen/specimen.hpp>
 
 #include <catch2/catch.hpp>
@@ -61,25 +63,6 @@ double chi_square_critical_1pct(int dof) {
   return table[dof];
 }
 
-void check_polygons(const vrut::Specimen& sp) {
-  const auto& aggs = sp.placement.aggregates;
-  const double W = sp.settings.placement.width, H = sp.settings.placement.height;
-  for (std::size_t a = 0; a < aggs.size(); ++a) {
-    const auto& poly = aggs[a].polygon;
-    REQUIRE(poly.vertices.size() >= 4);
-    REQUIRE(poly.vertices.size() <= 10);
-    REQUIRE(vrut::is_simple(poly));
-    REQUIRE(poly.area() > 0.0);
-    for (const auto& v : poly.vertices) {
-      REQUIRE(v.x() >= 0.0);
-      REQUIRE(v.y() >= 0.0);
-      REQUIRE(v.x() <= W);
-      REQUIRE(v.y() <= H);
-    }
-    for (std::size_t b = a + 1; b < aggs.size(); ++b) REQUIRE_FALSE(vrut::polygons_overlap(poly, aggs[b].polygon));
-  }
-}
-
 }  // namespace
 
 TEST_CASE("stereology agrees with a Monte Carlo cut through random spheres", "[specimen][stereology]") {
@@ -123,7 +106,7 @@ TEST_CASE("default specimens reach their targets with a valid aggregate skeleton
                       << sp.placement.target_fraction);
     CHECK(std::abs(sp.placement.achieved_fraction - sp.placement.target_fraction) <= 0.01);
     CHECK(std::abs(sp.disks.air_void_achieved - 0.04) <= 0.001);
-    check_polygons(sp);
+    vrut_test::check_polygons(sp);
 
     // Placed sizes against the 2D quantity gradation: chi-square at the 1 % level.
     std::vector<double> observed(sp.stereology.classes.size(), 0.0), p;
@@ -160,7 +143,7 @@ TEST_CASE("a specimen with other shapes and seeds is valid too", "[specimen]") {
   s.placement.shape.angle_fluctuation = 1.0;
   s.seed = 12345;
   const vrut::Specimen sp = vrut::generate_specimen(s);
-  check_polygons(sp);
+  vrut_test::check_polygons(sp);
   CHECK(std::abs(sp.placement.achieved_fraction - sp.placement.target_fraction) <= 0.01);
 }
 
@@ -168,6 +151,7 @@ TEST_CASE("same seed gives the same specimen and another seed another one", "[sp
   vrut::SpecimenSettings s;
   s.seed = 99;
   const vrut::Specimen a = vrut::generate_specimen(s), b = vrut::generate_specimen(s);
+  vrut_test::check_polygons(a);
   REQUIRE(a.disks.centers.size() == b.disks.centers.size());
   CHECK(a.disks.aggregate == b.disks.aggregate);
   CHECK(a.disks.bonds == b.disks.bonds);
@@ -175,6 +159,7 @@ TEST_CASE("same seed gives the same specimen and another seed another one", "[sp
     CHECK(a.placement.aggregates[k].polygon.vertices == b.placement.aggregates[k].polygon.vertices);
   s.seed = 100;
   const vrut::Specimen c = vrut::generate_specimen(s);
+  vrut_test::check_polygons(c);
   CHECK(c.disks.aggregate != a.disks.aggregate);
 }
 
