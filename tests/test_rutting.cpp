@@ -65,7 +65,7 @@ TEST_CASE("a small rutting test gives a sane deformation curve", "[rutting]") {
 TEST_CASE("without local damping alpha_T 1e3 and 1e4 give the same early curve", "[rutting][shift]") {
   const vrut::Specimen sp = small_specimen();
   vrut::WheelTracking wt;
-  wt.minutes = 6.0;  // the first 6 minutes of the 60-minute test:
+  wt.minutes = 6.0;  // the first 6 minutes of the 60-minute test
   wt.ds_from_minute = 4.0;
   vrut::RuttingNumerics slow_numerics = small_numerics(1e3), fast_numerics = small_numerics(1e4);
   slow_numerics.ramp_fraction = fast_numerics.ramp_fraction = 0.2;  // the same 1.2-minute ramp as 2 % of 60
