@@ -4,6 +4,8 @@
 // state, which survives rebuilds (matched by partner), and a reverse list so
 // every disk can sum its contact forces without atomics, in a fixed order.
 // That fixed order makes runs bitwise identical across backends and thread counts.
+// The disks of an ensemble's specimens share the grid's geometry, but each
+// specimen has its own layer of cells, so pairs never cross specimens.
 #include <vrut/contact/concept.hpp>
 #include <vrut/core/particles.hpp>
 
@@ -37,6 +39,7 @@ class ContactList {
   Kokkos::View<int*, memory_space> reverse_count;
   Kokkos::View<Vec2*, memory_space> position_at_build;
   int capacity = 0, reverse_capacity = 0;
+  int specimens = 1;  // layers of cells, one per specimen (Particles::specimen)
   long builds = 0;
 
   // Rebuilds from the current positions. Pairs that are bonded in the old
@@ -83,13 +86,14 @@ class ContactList {
 
   // Cells, public only because device lambdas cannot live in private members.
   Kokkos::View<int*, memory_space> cell_of, cell_start, cell_particles;
-  int cells_x = 0, cells_y = 0;
+  int cells_x = 0, cells_y = 0;  // per specimen layer
   double cell_size = 0.0, origin_x = 0.0, origin_y = 0.0;
 
   void build_cells(const execution_space& space, const Particles<memory_space>& ps, double skin) {
     const int n = static_cast<int>(ps.size());
     auto x = ps.position;
     auto r = ps.radius;
+    auto specimen = ps.specimen;
     double xmin, ymin, xmax, ymax, rmax;
     Kokkos::parallel_reduce("vrut::bounds_xmin", Kokkos::RangePolicy<execution_space>(space, 0, n),
         KOKKOS_LAMBDA(const int i, double& a) { if (x(i).x < a) a = x(i).x; }, Kokkos::Min<double>(xmin));
@@ -105,13 +109,14 @@ class ContactList {
       throw std::runtime_error("vrut: a disk position is not finite (time step too large?)");
     double size = 2.0 * rmax + skin;
     // Keep the grid at most ~4 cells per disk, whatever the spread.
-    while (((xmax - xmin) / size + 1.0) * ((ymax - ymin) / size + 1.0) > 4.0 * n + 16.0) size *= 2.0;
+    const double per_layer = static_cast<double>(n) / (specimens > 0 ? specimens : 1);
+    while (((xmax - xmin) / size + 1.0) * ((ymax - ymin) / size + 1.0) > 4.0 * per_layer + 16.0) size *= 2.0;
     cell_size = size;
     origin_x = xmin;
     origin_y = ymin;
     cells_x = static_cast<int>((xmax - xmin) / size) + 1;
     cells_y = static_cast<int>((ymax - ymin) / size) + 1;
-    const int ncells = cells_x * cells_y;
+    const int ncells = cells_x * cells_y * (specimens > 0 ? specimens : 1);
 
     cell_of = Kokkos::View<int*, memory_space>("cell_of", n);
     cell_start = Kokkos::View<int*, memory_space>("cell_start", ncells + 1);
@@ -127,8 +132,8 @@ class ContactList {
           int ix = static_cast<int>((x(i).x - ox) / size), iy = static_cast<int>((x(i).y - oy) / size);
           ix = ix < 0 ? 0 : (ix >= cx ? cx - 1 : ix);
           iy = iy < 0 ? 0 : (iy >= cy ? cy - 1 : iy);
-          cof(i) = iy * cx + ix;
-          Kokkos::atomic_increment(&start(cof(i) + 1));
+          cof(i) = (specimen(i) * cy + iy) * cx + ix;
+          Kokkos::atomic_add(&start(cof(i) + 1), 1);  // atomic_increment is deprecated in Kokkos 4
         });
     Kokkos::parallel_scan("vrut::cell_scan", Kokkos::RangePolicy<execution_space>(space, 1, ncells + 1),
         KOKKOS_LAMBDA(const int c, int& partial, const bool final) {
@@ -162,14 +167,14 @@ class ContactList {
     Kokkos::parallel_reduce("vrut::contact_fill", Kokkos::RangePolicy<execution_space>(space, 0, n),
         KOKKOS_LAMBDA(const int i, int& most) {
           int k = 0;
-          const int ix = cof(i) % cx, iy = cof(i) / cx;
+          const int ix = cof(i) % cx, iy = (cof(i) / cx) % cy, layer = cof(i) / (cx * cy);
           for (int dy = -1; dy <= 1; ++dy) {
             const int yy = iy + dy;
             if (yy < 0 || yy >= cy) continue;
             for (int dx = -1; dx <= 1; ++dx) {
               const int xx = ix + dx;
               if (xx < 0 || xx >= cx) continue;
-              const int c = yy * cx + xx;
+              const int c = (layer * cy + yy) * cx + xx;
               for (int m = start(c); m < start(c + 1); ++m) {
                 const int j = members(m);
                 if (j <= i) continue;

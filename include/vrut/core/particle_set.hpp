@@ -10,8 +10,13 @@ namespace vrut {
 struct ParticleSet {
   std::vector<double> x, y, radius, density;
   std::vector<int> group;
+  // Which specimen of an ensemble each disk belongs to (0 for a single run).
+  // Disks of different specimens never touch, whatever their positions, and
+  // each specimen's disks are contiguous and in increasing specimen order.
+  std::vector<int> specimen;
 
   std::size_t size() const { return x.size(); }
+  int specimens() const { return specimen.empty() ? 0 : specimen.back() + 1; }
 
   void add(double px, double py, double r, double rho, int g = 0) {
     if (!(r > 0.0)) throw std::invalid_argument("vrut: a disk radius must be positive");
@@ -22,6 +27,19 @@ struct ParticleSet {
     radius.push_back(r);
     density.push_back(rho);
     group.push_back(g);
+    specimen.push_back(specimens() > 0 ? specimen.back() : 0);
+  }
+
+  // Appends every disk of `other` as a new specimen; returns its index.
+  int append_specimen(const ParticleSet& other) {
+    const int s = size() == 0 ? 0 : specimens();
+    x.insert(x.end(), other.x.begin(), other.x.end());
+    y.insert(y.end(), other.y.begin(), other.y.end());
+    radius.insert(radius.end(), other.radius.begin(), other.radius.end());
+    density.insert(density.end(), other.density.begin(), other.density.end());
+    group.insert(group.end(), other.group.begin(), other.group.end());
+    specimen.insert(specimen.end(), other.size(), s);
+    return s;
   }
 };
 

@@ -24,7 +24,7 @@ struct Particles {
 
   view<Vec2> position, velocity, force, external_force, displacement;
   view<double> radius, mass, inertia, rotation, angular_velocity, moment;
-  view<int> group, fixity;
+  view<int> group, fixity, specimen;  // specimen: index in an ensemble (ParticleSet::specimen)
 
   Particles() = default;
   explicit Particles(std::size_t n)
@@ -32,7 +32,7 @@ struct Particles {
         external_force("external_force", n), displacement("displacement", n),
         radius("radius", n), mass("mass", n), inertia("inertia", n), rotation("rotation", n),
         angular_velocity("angular_velocity", n), moment("moment", n), group("group", n),
-        fixity("fixity", n) {}
+        fixity("fixity", n), specimen("specimen", n) {}
 
   std::size_t size() const { return position.extent(0); }
 };

@@ -11,6 +11,12 @@
 // velocities at t - dt/2; per disk, the forces summed in a fixed order and
 // the motion advanced; the wall loads summed in a fixed order; the
 // controllers set the wall velocities; the walls move.
+//
+// Ensembles: the disks may belong to several specimens (ParticleSet::specimen)
+// that share every kernel launch but never interact: contacts are searched
+// within a specimen only, and each wall belongs to one specimen and touches
+// only its disks. Every sum runs in the order a specimen alone would use, so
+// each specimen follows exactly the trajectory of its own single run.
 #include <vrut/contact/composite.hpp>
 #include <vrut/contact/concept.hpp>
 #include <vrut/core/assignment.hpp>
@@ -67,6 +73,10 @@ class Simulation {
     auto hm = Kokkos::create_mirror_view(particles_.mass);
     auto hi = Kokkos::create_mirror_view(particles_.inertia);
     auto hg = Kokkos::create_mirror_view(particles_.group);
+    auto hs = Kokkos::create_mirror_view(particles_.specimen);
+    if (!set.specimen.empty() && set.specimen.size() != set.size())
+      throw std::invalid_argument("vrut::Simulation: the specimen index list has the wrong length");
+    specimen_begin_host_.assign(1, 0);
     double rmax = 0.0;
     for (int i = 0; i < n; ++i) {
       if (set.group[i] >= table.groups())
@@ -78,13 +88,29 @@ class Simulation {
       hm(i) = set.density[i] * 3.14159265358979323846 * set.radius[i] * set.radius[i] * settings.thickness;
       hi(i) = 0.5 * hm(i) * set.radius[i] * set.radius[i];
       hg(i) = set.group[i];
+      hs(i) = set.specimen.empty() ? 0 : set.specimen[i];
+      const int previous = i == 0 ? 0 : hs(i - 1);
+      if (hs(i) != previous && hs(i) != previous + 1)
+        throw std::invalid_argument("vrut::Simulation: disk " + std::to_string(i) + " has specimen " +
+                                    std::to_string(hs(i)) + " after " + std::to_string(previous) +
+                                    " (each specimen's disks must be contiguous, in order from 0)");
+      if (hs(i) != previous) specimen_begin_host_.push_back(i);
       rmax = std::max(rmax, set.radius[i]);
     }
+    specimen_begin_host_.push_back(n);
     Kokkos::deep_copy(particles_.position, h);
     Kokkos::deep_copy(particles_.radius, hr);
     Kokkos::deep_copy(particles_.mass, hm);
     Kokkos::deep_copy(particles_.inertia, hi);
     Kokkos::deep_copy(particles_.group, hg);
+    Kokkos::deep_copy(particles_.specimen, hs);
+    specimen_begin_ = Kokkos::View<int*, memory_space>("specimen_begin", specimen_begin_host_.size());
+    {
+      auto hb = Kokkos::create_mirror_view(specimen_begin_);
+      for (std::size_t k = 0; k < specimen_begin_host_.size(); ++k) hb(k) = specimen_begin_host_[k];
+      Kokkos::deep_copy(specimen_begin_, hb);
+    }
+    contacts_.specimens = specimens();
     if (settings_.skin < 0.0) settings_.skin = 0.2 * rmax;
 
     auto hp = Kokkos::create_mirror_view(law_params_);
@@ -96,17 +122,27 @@ class Simulation {
   }
 
   // --- set-up ---------------------------------------------------------------
-  int add_wall(const Wall& wall, const wall_params_type& params, const controller_params& control = {}) {
+  // Adds a wall that touches the disks of one specimen (0 in a single run).
+  int add_wall(const Wall& wall, const wall_params_type& params, const controller_params& control = {},
+               int specimen = 0) {
     if (!(length(wall) > 0.0)) throw std::invalid_argument("vrut::Simulation: a wall needs two distinct ends");
+    if (specimen < 0 || specimen >= specimens())
+      throw std::invalid_argument("vrut::Simulation: wall for specimen " + std::to_string(specimen) + ", but there are " +
+                                  std::to_string(specimens()));
     pull_walls();  // the device holds where the existing walls have moved to
     const int w = static_cast<int>(walls_host_.size());
     walls_host_.push_back(wall);
     wall_params_host_.push_back(params);
     control_host_.push_back(control);
+    wall_specimen_host_.push_back(specimen);
     wall_stiffness_ = std::max(wall_stiffness_, static_cast<double>(WallLaw::stiffness(params)));
     rebuild_walls(w + 1);
     return w;
   }
+  int specimens() const { return static_cast<int>(specimen_begin_host_.size()) - 1; }
+  // Disks [first, second) belong to specimen s.
+  std::pair<int, int> specimen_range(int s) const { return {specimen_begin_host_.at(s), specimen_begin_host_.at(s + 1)}; }
+  int wall_specimen(int w) const { return wall_specimen_host_.at(w); }
   void set_controller(int w, const controller_params& control) {
     pull_walls();
     control_host_.at(w) = control;
@@ -215,6 +251,15 @@ class Simulation {
     pull_walls();
     return walls_host_.at(w);
   }
+  // Every wall where it is now, in one copy from the device.
+  const std::vector<Wall>& all_walls() {
+    pull_walls();
+    return walls_host_;
+  }
+  std::vector<Vec2> all_wall_impulses() const {
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), wall_impulse_);
+    return std::vector<Vec2>(h.data(), h.data() + h.extent(0));
+  }
   WallLoad wall_load(int w) const {
     auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), wall_total_);
     return h(w);
@@ -225,9 +270,10 @@ class Simulation {
     auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), wall_impulse_);
     return h(w);
   }
-  // Counts of touching (or bonded) contacts and of intact bonds.
-  int active_contacts() const { return count_contacts(false); }
-  int intact_bonds() const { return count_contacts(true); }
+  // Counts of touching (or bonded) contacts and of intact bonds, in all
+  // specimens or in one.
+  int active_contacts(int specimen = -1) const { return count_contacts(false, specimen); }
+  int intact_bonds(int specimen = -1) const { return count_contacts(true, specimen); }
 
   // --- kernels (public only because device lambdas cannot be private) -----
   void contact_forces(double dt) {
@@ -282,7 +328,8 @@ class Simulation {
     auto wparams = wall_params_;
     auto wstate = wall_state_;
     auto wload = wall_load_;
-    const int nwalls = walls();
+    auto swalls = specimen_walls_;
+    auto swall_count = specimen_wall_count_;
     const Vec2 gravity = settings_.gravity;
     const integrator_params integrator = integrator_;
     Kokkos::parallel_for("vrut::sum_and_advance", Kokkos::RangePolicy<execution_space>(space_, 0, ps.size()),
@@ -299,13 +346,16 @@ class Simulation {
             f += l.force;
             m += l.moment_second;
           }
-          for (int w = 0; w < nwalls; ++w) {
+          // The walls of this disk's specimen, by slot: (disk, slot) indexes the wall state and load.
+          const int sp = ps.specimen(i);
+          for (int q = 0; q < swall_count(sp); ++q) {
+            const int w = swalls(sp, q);
             ContactGeometry g;
             const double dist = wall_distance(wall_view(w), ps.position(i), g.normal);
             g.overlap = ps.radius(i) - dist;
-            if (g.overlap <= 0.0 && !is_bonded<WallLaw>(wstate(i, w))) {
-              wstate(i, w) = wall_state_type{};
-              wload(i, w) = WallLoad{};
+            if (g.overlap <= 0.0 && !is_bonded<WallLaw>(wstate(i, q))) {
+              wstate(i, q) = wall_state_type{};
+              wload(i, q) = WallLoad{};
               continue;
             }
             const Vec2 t = perp(g.normal);
@@ -316,14 +366,14 @@ class Simulation {
             g.dt = dt;
             g.radius_1 = 0.0;
             g.radius_2 = ps.radius(i);
-            const ContactForce cf = WallLaw::force(wparams(w), wstate(i, w), g);
+            const ContactForce cf = WallLaw::force(wparams(w), wstate(i, q), g);
             const Vec2 on_disk = cf.normal * g.normal + cf.shear * t;
             f += on_disk;
             m -= arm * cf.shear;
             WallLoad wl;
             wl.force = -on_disk;
             wl.contacts = g.overlap > 0.0 ? 1.0 : 0.0;
-            wload(i, w) = wl;
+            wload(i, q) = wl;
           }
           ps.force(i) = f;
           ps.moment(i) = m;
@@ -331,24 +381,31 @@ class Simulation {
         });
   }
 
-  // Wall loads summed in fixed blocks, then the blocks in order, so the sum
-  // does not depend on the backend; then the controllers and the motion.
+  // Wall loads summed in fixed blocks of the wall's specimen, then the blocks
+  // in order, so the sum does not depend on the backend nor on the other
+  // specimens; then the controllers and the motion.
   static constexpr int reduce_block = 512;
   void move_walls(double dt) {
     const int nwalls = walls();
     if (nwalls == 0) return;
-    const int n = static_cast<int>(particles_.size());
-    const int blocks = (n + reduce_block - 1) / reduce_block;
-    if (block_load_.extent(0) != static_cast<std::size_t>(blocks))
+    int largest = 0;
+    for (int s = 0; s < specimens(); ++s)
+      largest = std::max(largest, specimen_begin_host_[s + 1] - specimen_begin_host_[s]);
+    const int blocks = (largest + reduce_block - 1) / reduce_block;
+    if (block_load_.extent(0) != static_cast<std::size_t>(blocks) || block_load_.extent(1) != static_cast<std::size_t>(nwalls))
       block_load_ = Kokkos::View<WallLoad**, memory_space>("wall_block_load", blocks, nwalls);
     auto bl = block_load_;
     auto wload = wall_load_;
+    auto begin = specimen_begin_;
+    auto owner = wall_specimen_;
+    auto slot = wall_slot_;
     Kokkos::parallel_for("vrut::wall_blocks",
         Kokkos::RangePolicy<execution_space>(space_, 0, blocks * nwalls), KOKKOS_LAMBDA(const int bw) {
           const int b = bw / nwalls, w = bw % nwalls;
+          const int first = begin(owner(w)), last = begin(owner(w) + 1), q = slot(w);
           WallLoad sum;
-          const int end = (b + 1) * reduce_block < n ? (b + 1) * reduce_block : n;
-          for (int i = b * reduce_block; i < end; ++i) sum += wload(i, w);
+          const int end = first + (b + 1) * reduce_block < last ? first + (b + 1) * reduce_block : last;
+          for (int i = first + b * reduce_block; i < end; ++i) sum += wload(i, q);
           bl(b, w) = sum;
         });
     auto wall_view = walls_;
@@ -359,7 +416,8 @@ class Simulation {
     Kokkos::parallel_for("vrut::move_walls", Kokkos::RangePolicy<execution_space>(space_, 0, nwalls),
         KOKKOS_LAMBDA(const int w) {
           WallLoad sum;
-          for (int b = 0; b < blocks; ++b) sum += bl(b, w);
+          const int own_blocks = (begin(owner(w) + 1) - begin(owner(w)) + reduce_block - 1) / reduce_block;
+          for (int b = 0; b < own_blocks; ++b) sum += bl(b, w);
           total(w) = sum;
           impulse(w) += dt * sum.force;
           Wall wall = wall_view(w);
@@ -370,14 +428,16 @@ class Simulation {
         });
   }
 
-  int count_contacts(bool bonds_only) const {
+  int count_contacts(bool bonds_only, int specimen = -1) const {
     auto ps = particles_;
     auto partner = contacts_.partner;
     auto count = contacts_.count;
     auto state = contacts_.state;
     int total = 0;
     if (contacts_.builds == 0) return 0;
-    Kokkos::parallel_reduce("vrut::count_contacts", Kokkos::RangePolicy<execution_space>(space_, 0, ps.size()),
+    const int first = specimen < 0 ? 0 : specimen_range(specimen).first;
+    const int last = specimen < 0 ? static_cast<int>(ps.size()) : specimen_range(specimen).second;
+    Kokkos::parallel_reduce("vrut::count_contacts", Kokkos::RangePolicy<execution_space>(space_, first, last),
         KOKKOS_LAMBDA(const int i, int& sum) {
           for (int k = 0; k < count(i); ++k) {
             const bool bonded = is_bonded<Law>(state(i, k));
@@ -390,9 +450,34 @@ class Simulation {
     return total;
   }
 
- private:
+  // Public only because device lambdas cannot live in private members (nvcc).
   void rebuild_walls(int nwalls) {
     const int n = static_cast<int>(particles_.size());
+    // Each specimen's walls get slots 0, 1, ... in the order they were added.
+    const int nspec = specimens();
+    std::vector<int> slots_used(nspec, 0), slot_of(nwalls);
+    for (int w = 0; w < nwalls; ++w) slot_of[w] = slots_used[wall_specimen_host_[w]]++;
+    const int slots = nspec > 0 ? *std::max_element(slots_used.begin(), slots_used.end()) : 0;
+    wall_specimen_ = Kokkos::View<int*, memory_space>("wall_specimen", nwalls);
+    wall_slot_ = Kokkos::View<int*, memory_space>("wall_slot", nwalls);
+    specimen_walls_ = Kokkos::View<int**, memory_space>("specimen_walls", nspec, slots);
+    specimen_wall_count_ = Kokkos::View<int*, memory_space>("specimen_wall_count", nspec);
+    {
+      auto hs = Kokkos::create_mirror_view(wall_specimen_);
+      auto hq = Kokkos::create_mirror_view(wall_slot_);
+      auto hw = Kokkos::create_mirror_view(specimen_walls_);
+      auto hc = Kokkos::create_mirror_view(specimen_wall_count_);
+      for (int w = 0; w < nwalls; ++w) {
+        hs(w) = wall_specimen_host_[w];
+        hq(w) = slot_of[w];
+        hw(hs(w), hq(w)) = w;
+      }
+      for (int s = 0; s < nspec; ++s) hc(s) = slots_used[s];
+      Kokkos::deep_copy(wall_specimen_, hs);
+      Kokkos::deep_copy(wall_slot_, hq);
+      Kokkos::deep_copy(specimen_walls_, hw);
+      Kokkos::deep_copy(specimen_wall_count_, hc);
+    }
     walls_ = Kokkos::View<Wall*, memory_space>("walls", nwalls);
     wall_params_ = Kokkos::View<wall_params_type*, memory_space>("wall_params", nwalls);
     control_ = Kokkos::View<controller_params*, memory_space>("wall_control", nwalls);
@@ -403,8 +488,9 @@ class Simulation {
     control_state_ = control_state;
     wall_total_ = Kokkos::View<WallLoad*, memory_space>("wall_total", nwalls);
     wall_impulse_ = Kokkos::View<Vec2*, memory_space>("wall_impulse", nwalls);
-    // Contact state with walls: keep what the existing walls had.
-    Kokkos::View<wall_state_type**, memory_space> state("wall_state", n, nwalls);
+    // Contact state with walls: keep what the existing walls had (a new wall
+    // takes a new slot of its specimen, so the existing slots keep their walls).
+    Kokkos::View<wall_state_type**, memory_space> state("wall_state", n, slots);
     if (wall_state_.extent(1) > 0) {
       auto old = wall_state_;
       const int kept = static_cast<int>(old.extent(1));
@@ -412,10 +498,11 @@ class Simulation {
           KOKKOS_LAMBDA(const int i) { for (int w = 0; w < kept; ++w) state(i, w) = old(i, w); });
     }
     wall_state_ = state;
-    wall_load_ = Kokkos::View<WallLoad**, memory_space>("wall_load", n, nwalls);
+    wall_load_ = Kokkos::View<WallLoad**, memory_space>("wall_load", n, slots);
     block_load_ = {};
     push_walls();
   }
+ private:
   void push_walls() {
     const int nwalls = walls();
     auto hw = Kokkos::create_mirror_view(walls_);
@@ -447,6 +534,9 @@ class Simulation {
   std::vector<Wall> walls_host_;
   std::vector<wall_params_type> wall_params_host_;
   std::vector<controller_params> control_host_;
+  std::vector<int> wall_specimen_host_, specimen_begin_host_;
+  Kokkos::View<int*, memory_space> specimen_begin_, wall_specimen_, wall_slot_, specimen_wall_count_;
+  Kokkos::View<int**, memory_space> specimen_walls_;
   Kokkos::View<Wall*, memory_space> walls_;
   Kokkos::View<wall_params_type*, memory_space> wall_params_;
   Kokkos::View<controller_params*, memory_space> control_;

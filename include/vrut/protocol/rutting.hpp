@@ -122,126 +122,8 @@ inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, doub
   return table;
 }
 
-// progress(fraction of the loading time done, steps done).
-template <class Space>
-RuttingResult run_rutting(const Specimen& sp, const WheelTracking& wt, const RuttingMaterials& mat,
-                          const RuttingNumerics& num, const Space& space = Space(),
-                          const std::function<void(double, long)>& progress = {}) {
-  const double width = sp.settings.placement.width * 1e-3, height = sp.settings.placement.height * 1e-3;
-  wt.validate(width);
-  if (!(num.timestep_safety > 0.0 && num.timestep_safety <= 1.0)) throw std::invalid_argument("time-step safety must lie in (0, 1]");
-  if (num.samples < 10) throw std::invalid_argument("at least 10 samples");
-  const double t = wt.wheel_width;
-  const auto table = rutting_table(mat, t, num.shift);
-  SimulationSettings settings;
-  settings.thickness = t;
-  settings.gravity = {0.0, -wt.gravity};
-  CentralDifference::params_type integrator;
-  integrator.damping = num.settle_damping;
-  Simulation<RuttingLaw, Space, CentralDifference, LoadControl> sim(
-      to_particle_set(sp, mat.mastic_density, mat.aggregate_density), table, settings, integrator, space);
-  RuttingResult res;
-  res.bonds = sim.bond_pairs(sp.disks.bonds);
-  res.particles = sim.particles().size();
-
-  // The mould: bottom and both sides, linear and (by default) frictionless.
-  const double k_wall = aggregate_params(mat.aggregate_modulus, t, mat.aggregate_nu).normal.stiffness;
-  const auto wall_law = linear_params(k_wall, k_wall / (2.0 * (1.0 + mat.aggregate_nu)), mat.wall_friction);
-  sim.add_wall(Wall{{0.0, 0.0}, {width, 0.0}, {}}, wall_law);
-  sim.add_wall(Wall{{0.0, 2.0 * height}, {0.0, 0.0}, {}}, wall_law);
-  sim.add_wall(Wall{{width, 0.0}, {width, 2.0 * height}, {}}, wall_law);
-  const double dt = num.timestep_safety * sim.critical_timestep();
-  res.dt = dt;
-
-  // Settling under gravity.
-  sim.run(num.settle_steps, dt);
-
-  // The plate, on the highest disk under it; the servo brings it down.
-  const double l = wt.contact_length();
-  res.plate_x0 = 0.5 * (width - l);
-  res.plate_x1 = 0.5 * (width + l);
-  auto host_x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
-  const double r = sp.disks.radius * 1e-3;
-  double top = 0.0;
-  for (std::size_t i = 0; i < host_x.extent(0); ++i)
-    if (host_x(i).x + r > res.plate_x0 && host_x(i).x - r < res.plate_x1) top = std::max(top, host_x(i).y + r);
-  const double t_load = wt.loading_time() / num.shift;
-  const long steps = static_cast<long>(std::ceil(t_load / dt));
-  const long ramp_steps = std::max(1L, static_cast<long>(num.ramp_fraction * steps));
-  // The plate is loaded like the wheel itself: a dead load. A PFC servo
-  // (ServoControl) sets its speed from the stiffness of the wall contacts; on
-  // a flowing mastic under stiff aggregate contacts it lags far behind the
-  // target (docs/rutting.md), while the dead load holds the pressure.
-  // Its mass is numerical: ten times the least that keeps the plate stable on
-  // stiff contacts with every disk under it (k N dt^2 / 4), so that its
-  // inertia hardly shows in the measured pressure.
-  const double plate_mass = 10.0 * k_wall * (l / (2.0 * r)) * dt * dt / 4.0;
-  auto servo = [&](double force) { return LoadControl::for_stress(force / (l * t), l, t, plate_mass, 0.0); };
-  const int plate = sim.add_wall(Wall{{res.plate_x1, top}, {res.plate_x0, top}, {}}, wall_law, servo(0.0));
-  CentralDifference::params_type loading;
-  loading.damping = num.damping;
-  sim.set_integrator(loading);
-
-  Kokkos::View<Vec2*, typename Space::memory_space> start("loading_start", res.particles);
-  Kokkos::deep_copy(start, sim.particles().position);
-  auto snapshot = [&](double fraction) {
-    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
-    auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), start);
-    RuttingSnapshot s;
-    s.fraction = fraction;
-    for (std::size_t i = 0; i < x.extent(0); ++i) {
-      s.x.push_back(x(i).x);
-      s.y.push_back(x(i).y);
-      s.dx.push_back(x(i).x - x0(i).x);
-      s.dy.push_back(x(i).y - x0(i).y);
-    }
-    res.snapshots.push_back(std::move(s));
-  };
-
-  const double to_minutes = wt.minutes / t_load;
-  const auto begin = std::chrono::steady_clock::now();
-  int next_sample = 1, next_snapshot = 1;
-  Vec2 last_impulse;
-  double last_time = 0.0;
-  for (long s = 1; s <= steps; ++s) {
-    if (s <= ramp_steps && (s % 50 == 1 || s == ramp_steps))
-      sim.set_controller(plate, servo(wt.plate_force() * std::min(1.0, static_cast<double>(s) / ramp_steps)));
-    sim.step(dt);
-    const double time = s * dt;
-    if (next_sample <= num.samples && (time >= t_load * next_sample / num.samples - 0.5 * dt || s == steps)) {
-      const Wall w = sim.wall(plate);
-      RuttingSample smp;
-      smp.reduced_time = time;
-      smp.minutes = time * to_minutes;
-      smp.deformation = top - w.start.y;
-      // Mean pressure since the last sample, from the impulse on the plate.
-      const Vec2 impulse = sim.wall_impulse(plate);
-      smp.plate_pressure = -dot(impulse - last_impulse, inward_normal(w)) / (time - last_time) / (l * t);
-      last_impulse = impulse;
-      last_time = time;
-      res.samples.push_back(smp);
-      ++next_sample;
-      if (progress) progress(time / t_load, s);
-    }
-    if (next_snapshot <= 3 && (s >= steps * next_snapshot / 3)) {
-      snapshot(next_snapshot / 3.0);
-      ++next_snapshot;
-    }
-  }
-  Kokkos::fence();
-  res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  res.steps = steps;
-  res.contacts = sim.active_contacts();
-  res.plate_y_final = sim.wall(plate).start.y;
-  auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().velocity);
-  auto g = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().group);
-  for (std::size_t i = 0; i < v.extent(0); ++i) {
-    res.vx.push_back(v(i).x);
-    res.vy.push_back(v(i).y);
-    res.group.push_back(g(i));
-  }
-
-  // Deformation at the DS start minute (interpolated) and at the end.
+// Deformation at the DS start minute (interpolated), at the end, and the DS.
+inline void finish_deformation(RuttingResult& res, const WheelTracking& wt) {
   auto deformation_at = [&](double minute) {
     for (std::size_t k = 1; k < res.samples.size(); ++k)
       if (res.samples[k].minutes >= minute) {
@@ -256,7 +138,177 @@ RuttingResult run_rutting(const Specimen& sp, const WheelTracking& wt, const Rut
   const double dd_mm = (res.deformation_final - res.deformation_at_ds_start) * 1e3;
   res.dynamic_stability = dd_mm > 0.0 ? (wt.minutes - wt.ds_from_minute) * wt.passes_per_minute / dd_mm
                                        : std::numeric_limits<double>::infinity();
-  return res;
+}
+
+// Runs the test on every specimen of an ensemble side by side in one
+// Simulation: each kernel launch serves them all, and each specimen gets its
+// own mould and plate and exactly the result of its own single run (the time
+// step is the smallest any of them needs; with one disk radius it is the same
+// for all). progress(fraction of the loading time done, steps done).
+template <class Space>
+std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& specimens, const WheelTracking& wt,
+                                                const RuttingMaterials& mat, const RuttingNumerics& num,
+                                                const Space& space = Space(),
+                                                const std::function<void(double, long)>& progress = {}) {
+  if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
+  if (!(num.timestep_safety > 0.0 && num.timestep_safety <= 1.0)) throw std::invalid_argument("time-step safety must lie in (0, 1]");
+  if (num.samples < 10) throw std::invalid_argument("at least 10 samples");
+  const int count = static_cast<int>(specimens.size());
+  for (const Specimen& sp : specimens) wt.validate(sp.settings.placement.width * 1e-3);
+  const double t = wt.wheel_width;
+  const auto table = rutting_table(mat, t, num.shift);
+  SimulationSettings settings;
+  settings.thickness = t;
+  settings.gravity = {0.0, -wt.gravity};
+  CentralDifference::params_type integrator;
+  integrator.damping = num.settle_damping;
+  ParticleSet all;
+  std::vector<std::pair<int, int>> bonds;
+  for (const Specimen& sp : specimens) {
+    const int offset = static_cast<int>(all.size());
+    all.append_specimen(to_particle_set(sp, mat.mastic_density, mat.aggregate_density));
+    for (const auto& [i, j] : sp.disks.bonds) bonds.emplace_back(i + offset, j + offset);
+  }
+  Simulation<RuttingLaw, Space, CentralDifference, LoadControl> sim(all, table, settings, integrator, space);
+  std::vector<RuttingResult> results(count);
+  sim.bond_pairs(bonds);
+  for (int e = 0; e < count; ++e) {
+    results[e].bonds = sim.intact_bonds(e);
+    results[e].particles = specimens[e].disks.centers.size();
+  }
+
+  // Each mould: bottom and both sides, linear and (by default) frictionless.
+  const double k_wall = aggregate_params(mat.aggregate_modulus, t, mat.aggregate_nu).normal.stiffness;
+  const auto wall_law = linear_params(k_wall, k_wall / (2.0 * (1.0 + mat.aggregate_nu)), mat.wall_friction);
+  for (int e = 0; e < count; ++e) {
+    const double width = specimens[e].settings.placement.width * 1e-3, height = specimens[e].settings.placement.height * 1e-3;
+    sim.add_wall(Wall{{0.0, 0.0}, {width, 0.0}, {}}, wall_law, {}, e);
+    sim.add_wall(Wall{{0.0, 2.0 * height}, {0.0, 0.0}, {}}, wall_law, {}, e);
+    sim.add_wall(Wall{{width, 0.0}, {width, 2.0 * height}, {}}, wall_law, {}, e);
+  }
+  const double dt = num.timestep_safety * sim.critical_timestep();
+
+  // Settling under gravity.
+  sim.run(num.settle_steps, dt);
+
+  // The plates, each on the highest disk under it; the load brings it down.
+  const double l = wt.contact_length();
+  const double t_load = wt.loading_time() / num.shift;
+  const long steps = static_cast<long>(std::ceil(t_load / dt));
+  const long ramp_steps = std::max(1L, static_cast<long>(num.ramp_fraction * steps));
+  auto host_x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  std::vector<double> top(count, 0.0);
+  std::vector<int> plate(count);
+  std::vector<double> plate_mass(count);
+  for (int e = 0; e < count; ++e) {
+    RuttingResult& res = results[e];
+    res.dt = dt;
+    const double width = specimens[e].settings.placement.width * 1e-3;
+    res.plate_x0 = 0.5 * (width - l);
+    res.plate_x1 = 0.5 * (width + l);
+    const double r = specimens[e].disks.radius * 1e-3;
+    const auto [first, last] = sim.specimen_range(e);
+    for (int i = first; i < last; ++i)
+      if (host_x(i).x + r > res.plate_x0 && host_x(i).x - r < res.plate_x1) top[e] = std::max(top[e], host_x(i).y + r);
+    // The plate is loaded like the wheel itself: a dead load. A PFC servo
+    // (ServoControl) sets its speed from the stiffness of the wall contacts; on
+    // a flowing mastic under stiff aggregate contacts it lags far behind the
+    // target (docs/rutting.md), while the dead load holds the pressure.
+    // Its mass is numerical: ten times the least that keeps the plate stable on
+    // stiff contacts with every disk under it (k N dt^2 / 4), so that its
+    // inertia hardly shows in the measured pressure.
+    plate_mass[e] = 10.0 * k_wall * (l / (2.0 * r)) * dt * dt / 4.0;
+    plate[e] = sim.add_wall(Wall{{res.plate_x1, top[e]}, {res.plate_x0, top[e]}, {}}, wall_law,
+                            LoadControl::for_stress(0.0, l, t, plate_mass[e], 0.0), e);
+  }
+  auto ramp_to = [&](double fraction) {
+    const double stress = wt.plate_force() * fraction / (l * t);
+    for (int e = 0; e < count; ++e)
+      sim.set_controller(plate[e], LoadControl::for_stress(stress, l, t, plate_mass[e], 0.0));
+  };
+  CentralDifference::params_type loading;
+  loading.damping = num.damping;
+  sim.set_integrator(loading);
+
+  Kokkos::View<Vec2*, typename Space::memory_space> start("loading_start", all.size());
+  Kokkos::deep_copy(start, sim.particles().position);
+  auto snapshot = [&](double fraction) {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+    auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), start);
+    for (int e = 0; e < count; ++e) {
+      RuttingSnapshot s;
+      s.fraction = fraction;
+      const auto [first, last] = sim.specimen_range(e);
+      for (int i = first; i < last; ++i) {
+        s.x.push_back(x(i).x);
+        s.y.push_back(x(i).y);
+        s.dx.push_back(x(i).x - x0(i).x);
+        s.dy.push_back(x(i).y - x0(i).y);
+      }
+      results[e].snapshots.push_back(std::move(s));
+    }
+  };
+
+  const double to_minutes = wt.minutes / t_load;
+  const auto begin = std::chrono::steady_clock::now();
+  int next_sample = 1, next_snapshot = 1;
+  std::vector<Vec2> last_impulse(count);
+  double last_time = 0.0;
+  for (long s = 1; s <= steps; ++s) {
+    if (s <= ramp_steps && (s % 50 == 1 || s == ramp_steps))
+      ramp_to(std::min(1.0, static_cast<double>(s) / ramp_steps));
+    sim.step(dt);
+    const double time = s * dt;
+    if (next_sample <= num.samples && (time >= t_load * next_sample / num.samples - 0.5 * dt || s == steps)) {
+      const std::vector<Wall>& walls = sim.all_walls();
+      const std::vector<Vec2> impulse = sim.all_wall_impulses();
+      for (int e = 0; e < count; ++e) {
+        const Wall& w = walls[plate[e]];
+        RuttingSample smp;
+        smp.reduced_time = time;
+        smp.minutes = time * to_minutes;
+        smp.deformation = top[e] - w.start.y;
+        // Mean pressure since the last sample, from the impulse on the plate.
+        smp.plate_pressure = -dot(impulse[plate[e]] - last_impulse[e], inward_normal(w)) / (time - last_time) / (l * t);
+        last_impulse[e] = impulse[plate[e]];
+        results[e].samples.push_back(smp);
+      }
+      last_time = time;
+      ++next_sample;
+      if (progress) progress(time / t_load, s);
+    }
+    if (next_snapshot <= 3 && (s >= steps * next_snapshot / 3)) {
+      snapshot(next_snapshot / 3.0);
+      ++next_snapshot;
+    }
+  }
+  Kokkos::fence();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  const std::vector<Wall>& walls = sim.all_walls();
+  auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().velocity);
+  auto g = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().group);
+  for (int e = 0; e < count; ++e) {
+    RuttingResult& res = results[e];
+    res.wall_seconds = seconds;
+    res.steps = steps;
+    res.contacts = sim.active_contacts(e);
+    res.plate_y_final = walls[plate[e]].start.y;
+    const auto [first, last] = sim.specimen_range(e);
+    for (int i = first; i < last; ++i) {
+      res.vx.push_back(v(i).x);
+      res.vy.push_back(v(i).y);
+      res.group.push_back(g(i));
+    }
+    finish_deformation(res, wt);
+  }
+  return results;
+}
+
+template <class Space>
+RuttingResult run_rutting(const Specimen& sp, const WheelTracking& wt, const RuttingMaterials& mat,
+                          const RuttingNumerics& num, const Space& space = Space(),
+                          const std::function<void(double, long)>& progress = {}) {
+  return run_rutting_ensemble(std::vector<Specimen>{sp}, wt, mat, num, space, progress).front();
 }
 
 }  // namespace vrut
