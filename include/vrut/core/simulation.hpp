@@ -60,6 +60,8 @@ class Simulation {
   using integrator_params = typename Integrator::params_type;
   using controller_params = typename Controller::params_type;
   using controller_state = typename Controller::state_type;
+  using WallMask = unsigned long long;
+  static constexpr int max_walls_per_specimen = 64;
 
   Simulation(const ParticleSet& set, const AssignmentTable<Law>& table, const SimulationSettings& settings = {},
              const integrator_params& integrator = {}, const execution_space& space = execution_space())
@@ -328,6 +330,7 @@ class Simulation {
     auto wparams = wall_params_;
     auto wstate = wall_state_;
     auto wload = wall_load_;
+    auto wtouch = wall_touch_;
     auto swalls = specimen_walls_;
     auto swall_count = specimen_wall_count_;
     const Vec2 gravity = settings_.gravity;
@@ -347,17 +350,24 @@ class Simulation {
             m += l.moment_second;
           }
           // The walls of this disk's specimen, by slot: (disk, slot) indexes the wall state and load.
+          // A slot whose bit in wall_touch is clear holds the default state
+          // and a zero load: most disks touch no wall, and skipping their
+          // slots saves most of the memory traffic the walls would cost.
           const int sp = ps.specimen(i);
+          const WallMask held = wtouch(i);
+          WallMask holds = 0;
           for (int q = 0; q < swall_count(sp); ++q) {
             const int w = swalls(sp, q);
             ContactGeometry g;
             const double dist = wall_distance(wall_view(w), ps.position(i), g.normal);
             g.overlap = ps.radius(i) - dist;
+            if (g.overlap <= 0.0 && !((held >> q) & 1u)) continue;
             if (g.overlap <= 0.0 && !is_bonded<WallLaw>(wstate(i, q))) {
               wstate(i, q) = wall_state_type{};
               wload(i, q) = WallLoad{};
               continue;
             }
+            holds |= WallMask(1) << q;
             const Vec2 t = perp(g.normal);
             const double arm = ps.radius(i) - g.overlap;
             const Vec2 v_rel = ps.velocity(i) - (ps.angular_velocity(i) * arm) * t - wall_view(w).velocity;
@@ -375,6 +385,7 @@ class Simulation {
             wl.contacts = g.overlap > 0.0 ? 1.0 : 0.0;
             wload(i, q) = wl;
           }
+          wtouch(i) = holds;
           ps.force(i) = f;
           ps.moment(i) = m;
           Integrator::advance(integrator, ps, i, f, m, dt);
@@ -396,6 +407,7 @@ class Simulation {
       block_load_ = Kokkos::View<WallLoad**, memory_space>("wall_block_load", blocks, nwalls);
     auto bl = block_load_;
     auto wload = wall_load_;
+    auto wtouch = wall_touch_;
     auto begin = specimen_begin_;
     auto owner = wall_specimen_;
     auto slot = wall_slot_;
@@ -405,7 +417,9 @@ class Simulation {
           const int first = begin(owner(w)), last = begin(owner(w) + 1), q = slot(w);
           WallLoad sum;
           const int end = first + (b + 1) * reduce_block < last ? first + (b + 1) * reduce_block : last;
-          for (int i = first + b * reduce_block; i < end; ++i) sum += wload(i, q);
+          // Clear bits stand for zero loads: skipping them leaves the sum bit for bit the same.
+          for (int i = first + b * reduce_block; i < end; ++i)
+            if ((wtouch(i) >> q) & 1u) sum += wload(i, q);
           bl(b, w) = sum;
         });
     auto wall_view = walls_;
@@ -458,6 +472,10 @@ class Simulation {
     std::vector<int> slots_used(nspec, 0), slot_of(nwalls);
     for (int w = 0; w < nwalls; ++w) slot_of[w] = slots_used[wall_specimen_host_[w]]++;
     const int slots = nspec > 0 ? *std::max_element(slots_used.begin(), slots_used.end()) : 0;
+    if (slots > max_walls_per_specimen)
+      throw std::invalid_argument("vrut::Simulation: more than " + std::to_string(max_walls_per_specimen) +
+                                  " walls for one specimen");
+    if (wall_touch_.extent(0) != static_cast<std::size_t>(n)) wall_touch_ = Kokkos::View<WallMask*, memory_space>("wall_touch", n);
     wall_specimen_ = Kokkos::View<int*, memory_space>("wall_specimen", nwalls);
     wall_slot_ = Kokkos::View<int*, memory_space>("wall_slot", nwalls);
     specimen_walls_ = Kokkos::View<int**, memory_space>("specimen_walls", nspec, slots);
@@ -543,6 +561,7 @@ class Simulation {
   Kokkos::View<controller_state*, memory_space> control_state_;
   Kokkos::View<wall_state_type**, memory_space> wall_state_;
   Kokkos::View<WallLoad**, memory_space> wall_load_, block_load_;
+  Kokkos::View<WallMask*, memory_space> wall_touch_;  // per disk: bit q set where wall slot q holds state or load
   Kokkos::View<WallLoad*, memory_space> wall_total_;
   Kokkos::View<Vec2*, memory_space> wall_impulse_;
 
