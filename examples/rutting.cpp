@@ -2,8 +2,10 @@
 // its gradation and binder properties to the rut depth and dynamic stability.
 #include "common/cli.hpp"
 #include "common/draw.hpp"
+#include "common/seeds.hpp"
 #include "common/specimen_cli.hpp"
 
+#include <vrut/analysis/rutting_ensemble.hpp>
 #include <vrut/backend.hpp>
 #include <vrut/io/output_dir.hpp>
 #include <vrut/io/plot.hpp>
@@ -35,6 +37,77 @@ void snapshot_panel(draw::Canvas& c, const vrut::Specimen& sp, const vrut::Rutti
               {0.8, 0.1, 0.1});
 }
 
+// rut_forming.png: the specimen at 20, 40 and 60 min.
+void rut_forming_png(const vrut::Specimen& sp, const vrut::RuttingResult& res, double test_minutes,
+                     const std::string& path) {
+  const double W = sp.settings.placement.width, H = sp.settings.placement.height;
+  const double panel = H + 12.0;  // a strip for the label above each panel
+  draw::Canvas c(W, 3 * panel, 5.0);
+  const double plate_top = res.plate_y_final * 1e3;
+  const double final_mm = res.samples.back().deformation * 1e3;
+  for (std::size_t k = 0; k < res.snapshots.size(); ++k) {
+    const double offset = (2 - static_cast<double>(k)) * panel;
+    const auto& s = res.snapshots[k];
+    // Plate height at this moment: from the deformation curve.
+    const double when = s.fraction * test_minutes;
+    double def = final_mm;
+    for (const auto& smp : res.samples)
+      if (smp.minutes >= when) { def = smp.deformation * 1e3; break; }
+    snapshot_panel(c, sp, s, offset, res, plate_top + final_mm - def);
+    char label[128];
+    std::snprintf(label, sizeof label, "%.0f min: rut %.2f mm", when, def);
+    c.text(2.0, offset + H + 5.0, label, 16.0);
+  }
+  c.save(path);
+}
+
+// displacement.png: the displacement field at the end, colour and arrows.
+void displacement_png(const vrut::Specimen& sp, const vrut::RuttingResult& res, const std::string& path) {
+  const double W = sp.settings.placement.width, H = sp.settings.placement.height;
+  const auto& end = res.snapshots.back();
+  draw::Canvas c(W, H + 12.0, 6.0);
+  double dmax = 1e-12;
+  for (std::size_t i = 0; i < end.x.size(); ++i) dmax = std::max(dmax, std::hypot(end.dx[i], end.dy[i]));
+  for (std::size_t i = 0; i < end.x.size(); ++i)
+    c.disk(end.x[i] * 1e3, end.y[i] * 1e3, sp.disks.radius, draw::heat(std::hypot(end.dx[i], end.dy[i]) / dmax));
+  // Vectors on a coarse grid, scaled so the largest is 8 mm long.
+  const double every = std::max(1.0, std::floor(end.x.size() / 600.0));
+  for (std::size_t i = 0; i < end.x.size(); i += static_cast<std::size_t>(every))
+    c.arrow(end.x[i] * 1e3, end.y[i] * 1e3, end.dx[i] / dmax * 8.0, end.dy[i] / dmax * 8.0, {0, 0, 0}, 1.0);
+  char label[160];
+  std::snprintf(label, sizeof label, "|u| at the end: 0 (blue) to %.2f mm (red); longest arrow 8 mm", dmax * 1e3);
+  c.text(2.0, H + 6.0, label, 14.0);
+  c.save(path);
+}
+
+// final.vtk: final positions, displacement, velocity, group.
+void final_vtk(const vrut::Specimen& sp, const vrut::RuttingResult& res, const std::string& path) {
+  const auto& end = res.snapshots.back();
+  std::vector<double> group(res.group.begin(), res.group.end()), radius(end.x.size(), sp.disks.radius * 1e-3);
+  std::vector<std::pair<double, double>> disp, vel;
+  for (std::size_t i = 0; i < end.x.size(); ++i) {
+    disp.emplace_back(end.dx[i], end.dy[i]);
+    vel.emplace_back(res.vx[i], res.vy[i]);
+  }
+  vrut::VtkPointData data;
+  data.scalars = {{"radius", radius}, {"group", group}};
+  data.vectors = {{"displacement", disp}, {"velocity", vel}};
+  vrut::write_vtk_disks(path, "vrut rutting final state (m); group 0 mastic, 1 aggregate", end.x, end.y, data);
+}
+
+nlohmann::json statistics_json(const vrut::SampleStatistics& s) {
+  nlohmann::json j;
+  j["n"] = s.n;
+  j["mean"] = s.mean;
+  j["sd"] = s.sd;
+  j["ci"] = {s.ci_low, s.ci_high};
+  j["confidence"] = s.confidence;
+  j["median"] = s.median;
+  j["min"] = s.min;
+  j["max"] = s.max;
+  return j;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -47,6 +120,7 @@ int main(int argc, char** argv) {
   std::string backend = "openmp", out = "out/rutting", conversion = "seed";
   int threads = 0;
   bool force = false;
+  std::string seeds_text;
   double e1 = mat.mastic.E1 * 1e-6, eta1 = mat.mastic.eta1 * 1e-6, e2 = mat.mastic.E2 * 1e-6,
          eta2 = mat.mastic.eta2 * 1e-6;
   double pressure_mpa = wt.pressure * 1e-6, wheel_width_mm = wt.wheel_width * 1e3, travel_mm = wt.travel * 1e3;
@@ -56,6 +130,8 @@ int main(int argc, char** argv) {
   app.set_config("--config", "", "read options from this file (INI/TOML, as written to DIR/config.ini)");
   app.allow_config_extras(false);  // an unknown key in a config file is an error
   add_specimen_options(app, so);
+  app.add_option("--seeds", seeds_text,
+                 "an ensemble: specimens of these seeds, run side by side, e.g. 1-16 or 1,4,9 (instead of --seed)");
   app.add_option("--E1", e1, "mastic Maxwell modulus at 60 C, MPa")->capture_default_str()->group("Materials");
   app.add_option("--eta1", eta1, "mastic Maxwell viscosity, MPa s")->capture_default_str()->group("Materials");
   app.add_option("--E2", e2, "mastic Kelvin modulus, MPa")->capture_default_str()->group("Materials");
@@ -118,105 +194,117 @@ int main(int argc, char** argv) {
     wt.validate(ss.placement.width * 1e-3);
     std::ofstream(dir.file("config.ini")) << app.config_to_str(true, true);
 
-    vrut::Specimen sp;
-    try {
-      sp = vrut::generate_specimen(ss);
-    } catch (const std::runtime_error& e) {
-      std::cerr << "error: " << e.what() << '\n';
-      return 1;
+    const std::vector<std::uint64_t> seeds =
+        seeds_text.empty() ? std::vector<std::uint64_t>{so.seed} : cli::parse_seed_list(seeds_text);
+    const bool ensemble = !seeds_text.empty();
+    std::vector<vrut::Specimen> specimens;
+    for (std::uint64_t seed : seeds) {
+      ss.seed = seed;
+      try {
+        specimens.push_back(vrut::generate_specimen(ss));
+      } catch (const std::runtime_error& e) {
+        std::cerr << "error: seed " << seed << ": " << e.what() << '\n';
+        return 1;
+      }
+      if (seeds.size() > 1) std::fprintf(stderr, "\rspecimens generated: %zu of %zu", specimens.size(), seeds.size());
     }
-    std::fprintf(stderr, "specimen: gradation %s, %zu disks, %zu aggregates; plate %.2f mm, loading %.1f s (%.4g s reduced)\n",
-                 ss.gradation.name.c_str(), sp.disks.centers.size(), sp.placement.aggregates.size(),
+    if (seeds.size() > 1) std::fprintf(stderr, "\n");
+    std::size_t disks = 0;
+    for (const auto& sp : specimens) disks += sp.disks.centers.size();
+    const vrut::Specimen& sp = specimens.front();
+    std::fprintf(stderr, "specimen%s: gradation %s, %zu disks%s, %zu aggregates%s; plate %.2f mm, loading %.1f s (%.4g s reduced)\n",
+                 ensemble ? "s" : "", ss.gradation.name.c_str(), disks, ensemble ? " in all" : "",
+                 sp.placement.aggregates.size(), ensemble ? " in the first" : "",
                  wt.contact_length() * 1e3, wt.loading_time(), wt.loading_time() / num.shift);
 
     vrut::KokkosSession kokkos(threads);
     int used_threads = 1;
-    vrut::ProgressBar bar("loading", 1000, "permille");
-    const vrut::RuttingResult res = vrut::dispatch_backend(backend, [&](auto space) {
+    vrut::ProgressBar bar(ensemble ? "loading " + std::to_string(specimens.size()) + " specimens" : "loading", 1000,
+                          "permille");
+    const std::vector<vrut::RuttingResult> runs = vrut::dispatch_backend(backend, [&](auto space) {
       used_threads = vrut::concurrency(space);
-      return vrut::run_rutting(sp, wt, mat, num, space,
-                               [&](double fraction, long) { bar.update(static_cast<long>(1000 * fraction)); });
+      return vrut::run_rutting_ensemble(specimens, wt, mat, num, space,
+                                        [&](double fraction, long) { bar.update(static_cast<long>(1000 * fraction)); });
     });
     bar.finish();
+    const vrut::RuttingResult& res = runs.front();
+    const vrut::RuttingEnsembleSummary summary = vrut::summarize_rutting(runs, wt);
 
-    // deformation.csv and .png
+    // deformation.csv and .png: one specimen's curve, or the ensemble's mean,
+    // interval and every specimen's curve.
     std::ofstream csv(dir.file("deformation.csv"));
-    csv << "minutes,reduced_time_s,deformation_mm,plate_pressure_mpa\n";
-    std::vector<double> minutes, deformation;
-    for (const auto& s : res.samples) {
-      csv << s.minutes << ',' << s.reduced_time << ',' << s.deformation * 1e3 << ',' << s.plate_pressure * 1e-6 << '\n';
-      minutes.push_back(s.minutes);
-      deformation.push_back(s.deformation * 1e3);
+    csv << "minutes,reduced_time_s,deformation_mm,plate_pressure_mpa";
+    if (ensemble) {
+      csv << ",sd_mm,ci95_low_mm,ci95_high_mm";
+      for (auto seed : seeds) csv << ",seed_" << seed << "_mm";
+    }
+    csv << '\n';
+    std::vector<double> minutes, deformation, low, high;
+    const auto& mean = summary.mean_curve.samples;
+    for (std::size_t k = 0; k < mean.size(); ++k) {
+      csv << mean[k].minutes << ',' << mean[k].reduced_time << ',' << mean[k].deformation * 1e3 << ','
+          << mean[k].plate_pressure * 1e-6;
+      if (ensemble) {
+        csv << ',' << summary.deformation_sd[k] * 1e3 << ',' << summary.deformation_ci_low[k] * 1e3 << ','
+            << summary.deformation_ci_high[k] * 1e3;
+        for (const auto& r : runs) csv << ',' << r.samples[k].deformation * 1e3;
+      }
+      csv << '\n';
+      minutes.push_back(mean[k].minutes);
+      deformation.push_back(mean[k].deformation * 1e3);
+      low.push_back(summary.deformation_ci_low[k] * 1e3);
+      high.push_back(summary.deformation_ci_high[k] * 1e3);
     }
     csv.close();
     vrut::PlotSpec spec;
-    spec.title = "Virtual wheel-tracking test, gradation " + ss.gradation.name;
     spec.xlabel = "test time (min)";
     spec.ylabel = "deformation (mm)";
-    vrut::write_plot_png(dir.file("deformation.png").string(), spec, {{"rut depth under the plate", minutes, deformation}});
+    std::vector<vrut::PlotSeries> series;
+    if (ensemble) {
+      spec.title = "Virtual wheel-tracking test, gradation " + ss.gradation.name + ", " +
+                   std::to_string(runs.size()) + " specimens";
+      vrut::PlotSeries band{"95 % interval of the mean", minutes, low, "filledcurves fs transparent solid 0.3 lc rgb '#4477aa'"};
+      band.y2 = high;
+      series.push_back(band);
+      for (std::size_t e = 0; e < runs.size(); ++e) {
+        vrut::PlotSeries one{e == 0 ? "each specimen" : "", {}, {}, "lines lw 1 lc rgb '#bbbbbb'"};
+        for (const auto& smp : runs[e].samples) {
+          one.x.push_back(smp.minutes);
+          one.y.push_back(smp.deformation * 1e3);
+        }
+        series.push_back(one);
+      }
+      series.push_back({"mean", minutes, deformation, "lines lw 3 lc rgb '#223388'"});
+    } else {
+      spec.title = "Virtual wheel-tracking test, gradation " + ss.gradation.name;
+      series.push_back({"rut depth under the plate", minutes, deformation});
+    }
+    vrut::write_plot_png(dir.file("deformation.png").string(), spec, series);
 
-    // Pictures: the specimen, the rut forming, the displacement field.
+    // Pictures and VTK of the first specimen.
     draw::specimen_png(sp, dir.file("specimen.png").string());
-    const double W = ss.placement.width, H = ss.placement.height;
-    {
-      const double panel = H + 12.0;  // a strip for the label above each panel
-      draw::Canvas c(W, 3 * panel, 5.0);
-      const double plate_top = res.plate_y_final * 1e3;
-      for (std::size_t k = 0; k < res.snapshots.size(); ++k) {
-        const double offset = (2 - static_cast<double>(k)) * panel;
-        const auto& s = res.snapshots[k];
-        // Plate height at this moment: from the deformation curve.
-        const double when = s.fraction * wt.minutes;
-        double def = deformation.back();
-        for (std::size_t q = 0; q < minutes.size(); ++q)
-          if (minutes[q] >= when) { def = deformation[q]; break; }
-        snapshot_panel(c, sp, s, offset, res, plate_top + deformation.back() - def);
-        char label[128];
-        std::snprintf(label, sizeof label, "%.0f min: rut %.2f mm", when, def);
-        c.text(2.0, offset + H + 5.0, label, 16.0);
-      }
-      c.save(dir.file("rut_forming.png").string());
-    }
-    {
-      const auto& end = res.snapshots.back();
-      draw::Canvas c(W, H + 12.0, 6.0);
-      double dmax = 1e-12;
-      for (std::size_t i = 0; i < end.x.size(); ++i) dmax = std::max(dmax, std::hypot(end.dx[i], end.dy[i]));
-      for (std::size_t i = 0; i < end.x.size(); ++i)
-        c.disk(end.x[i] * 1e3, end.y[i] * 1e3, sp.disks.radius, draw::heat(std::hypot(end.dx[i], end.dy[i]) / dmax));
-      // Vectors on a coarse grid, scaled so the largest is 8 mm long.
-      const double every = std::max(1.0, std::floor(end.x.size() / 600.0));
-      for (std::size_t i = 0; i < end.x.size(); i += static_cast<std::size_t>(every))
-        c.arrow(end.x[i] * 1e3, end.y[i] * 1e3, end.dx[i] / dmax * 8.0, end.dy[i] / dmax * 8.0, {0, 0, 0}, 1.0);
-      char label[160];
-      std::snprintf(label, sizeof label, "|u| at the end: 0 (blue) to %.2f mm (red); longest arrow 8 mm", dmax * 1e3);
-      c.text(2.0, H + 6.0, label, 14.0);
-      c.save(dir.file("displacement.png").string());
-    }
+    rut_forming_png(sp, res, wt.minutes, dir.file("rut_forming.png").string());
+    displacement_png(sp, res, dir.file("displacement.png").string());
+    final_vtk(sp, res, dir.file("final.vtk").string());
 
-    // VTK of the final state.
-    {
-      const auto& end = res.snapshots.back();
-      std::vector<double> group(res.group.begin(), res.group.end()), radius(end.x.size(), sp.disks.radius * 1e-3);
-      std::vector<std::pair<double, double>> disp, vel;
-      for (std::size_t i = 0; i < end.x.size(); ++i) {
-        disp.emplace_back(end.dx[i], end.dy[i]);
-        vel.emplace_back(res.vx[i], res.vy[i]);
-      }
-      vrut::VtkPointData data;
-      data.scalars = {{"radius", radius}, {"group", group}};
-      data.vectors = {{"displacement", disp}, {"velocity", vel}};
-      vrut::write_vtk_disks(dir.file("final.vtk").string(), "vrut rutting final state (m); group 0 mastic, 1 aggregate",
-                            end.x, end.y, data);
+    if (ensemble) {
+      std::ofstream per_seed(dir.file("seeds.csv"));
+      per_seed << "seed,disks,aggregates,aggregate_area_fraction,rut_depth_mm,deformation_45min_mm,"
+                  "deformation_60min_mm,dynamic_stability_passes_per_mm\n";
+      for (std::size_t e = 0; e < runs.size(); ++e)
+        per_seed << seeds[e] << ',' << runs[e].particles << ',' << specimens[e].placement.aggregates.size() << ','
+                 << specimens[e].placement.achieved_fraction << ',' << runs[e].deformation_final * 1e3 << ','
+                 << runs[e].deformation_at_ds_start * 1e3 << ',' << runs[e].deformation_final * 1e3 << ','
+                 << runs[e].dynamic_stability << '\n';
     }
 
     nlohmann::json j;
     j["gradation"] = ss.gradation.name;
-    j["seed"] = ss.seed;
+    j["seed"] = seeds.front();
     j["disk_radius_mm"] = sp.disks.radius;
     j["shift_factor"] = num.shift;
     j["conversion"] = conversion;
-    j["particles"] = res.particles;
+    j["particles"] = disks;
     j["bonds"] = res.bonds;
     j["contacts"] = res.contacts;
     j["steps"] = res.steps;
@@ -224,20 +312,52 @@ int main(int argc, char** argv) {
     j["wall_seconds"] = res.wall_seconds;
     j["backend"] = backend;
     j["threads"] = used_threads;
-    j["particle_steps_per_second"] = res.particles * static_cast<double>(res.steps) / res.wall_seconds;
+    j["particle_steps_per_second"] = disks * static_cast<double>(res.steps) / res.wall_seconds;
     j["contact_length_mm"] = wt.contact_length() * 1e3;
     j["loading_time_s"] = wt.loading_time();
-    j["deformation_45min_mm"] = res.deformation_at_ds_start * 1e3;
-    j["deformation_60min_mm"] = res.deformation_final * 1e3;
-    j["rut_depth_mm"] = res.deformation_final * 1e3;
-    j["dynamic_stability_passes_per_mm"] = res.dynamic_stability;
+    // For an ensemble: the means over the specimens (the DS: of the mean curve),
+    // the first specimen's bonds, contacts and description.
+    j["deformation_45min_mm"] = summary.deformation_at_ds_start.mean;
+    j["deformation_60min_mm"] = summary.deformation_final.mean;
+    j["rut_depth_mm"] = summary.rut_depth.mean;
+    j["dynamic_stability_passes_per_mm"] = summary.mean_curve.dynamic_stability;
     j["specimen"] = specimen_summary(sp);
+    if (ensemble) {
+      nlohmann::json e;
+      e["seeds"] = seeds;
+      e["specimens"] = runs.size();
+      e["rut_depth_mm"] = statistics_json(summary.rut_depth);
+      e["deformation_45min_mm"] = statistics_json(summary.deformation_at_ds_start);
+      e["deformation_60min_mm"] = statistics_json(summary.deformation_final);
+      e["dynamic_stability_passes_per_mm"] = statistics_json(summary.dynamic_stability);
+      e["dynamic_stability_of_mean_curve"] = summary.mean_curve.dynamic_stability;
+      nlohmann::json per = nlohmann::json::array();
+      for (std::size_t k = 0; k < runs.size(); ++k)
+        per.push_back({{"seed", seeds[k]},
+                       {"disks", runs[k].particles},
+                       {"rut_depth_mm", runs[k].deformation_final * 1e3},
+                       {"deformation_45min_mm", runs[k].deformation_at_ds_start * 1e3},
+                       {"dynamic_stability_passes_per_mm", runs[k].dynamic_stability}});
+      e["per_seed"] = per;
+      j["ensemble"] = e;
+    }
     std::ofstream(dir.file("summary.json")) << j.dump(2) << '\n';
     dir.commit();
-    std::printf("gradation %s: rut depth %.2f mm at %.0f min, dynamic stability %.0f passes/mm "
-                "(%zu disks, %ld steps, %.0f s, %.3g particle-steps/s)\nresults in %s\n",
-                ss.gradation.name.c_str(), res.deformation_final * 1e3, wt.minutes, res.dynamic_stability, res.particles,
-                res.steps, res.wall_seconds, j["particle_steps_per_second"].get<double>(), out.c_str());
+    if (ensemble) {
+      const auto& r = summary.rut_depth;
+      const auto& d = summary.dynamic_stability;
+      std::printf("gradation %s, %d specimens: rut depth %.2f mm at %.0f min (sd %.2f, 95 %% CI %.2f to %.2f), "
+                  "dynamic stability: mean %.0f (95 %% CI %.0f to %.0f), median %.0f, of the mean curve %.0f passes/mm "
+                  "(%zu disks, %ld steps, %.0f s, %.3g particle-steps/s)\nresults in %s\n",
+                  ss.gradation.name.c_str(), r.n, r.mean, wt.minutes, r.sd, r.ci_low, r.ci_high, d.mean, d.ci_low,
+                  d.ci_high, d.median, summary.mean_curve.dynamic_stability, disks, res.steps, res.wall_seconds,
+                  j["particle_steps_per_second"].get<double>(), out.c_str());
+    } else {
+      std::printf("gradation %s: rut depth %.2f mm at %.0f min, dynamic stability %.0f passes/mm "
+                  "(%zu disks, %ld steps, %.0f s, %.3g particle-steps/s)\nresults in %s\n",
+                  ss.gradation.name.c_str(), res.deformation_final * 1e3, wt.minutes, res.dynamic_stability, disks,
+                  res.steps, res.wall_seconds, j["particle_steps_per_second"].get<double>(), out.c_str());
+    }
     return 0;
   });
 }

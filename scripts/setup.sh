@@ -12,7 +12,7 @@ say() { echo "[vrut setup] $*" >&2; }
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 # --- Debian packages -------------------------------------------------------
-packages=(g++ cmake ninja-build make pkg-config libeigen3-dev catch2 libcli11-dev
+packages=(g++ cmake ninja-build make pkg-config libeigen3-dev libboost-dev catch2 libcli11-dev
           libbenchmark-dev nlohmann-json3-dev gnuplot-nox libcairo2-dev)
 missing=()
 for p in "${packages[@]}"; do

@@ -96,6 +96,24 @@ rutting)
   expect "0" "rut depth" -- --config run1/config.ini --out run2
   cmp -s "$work/run1/deformation.csv" "$work/run2/deformation.csv" ||
     { echo "FAIL: the written config.ini does not reproduce the run"; failures=$((failures + 1)); }
+  # Ensembles: bad seed lists are refused before anything is written ...
+  expect "2" "backwards" -- "${small[@]}" --seeds 5-1 --out s1
+  expect "2" "not a seed" -- "${small[@]}" --seeds 1,x --out s2
+  expect "2" "twice" -- "${small[@]}" --seeds 1-3,2 --out s3
+  for d in s1 s2 s3; do
+    [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
+  done
+  # ... and an ensemble of seeds 1 and 2 gives seed 1 the curve of its single run (run1).
+  expect "0" "2 specimens: rut depth" -- "${small[@]}" --seeds 1-2 --out ens
+  for f in summary.json seeds.csv deformation.csv deformation.png specimen.png; do
+    [[ -s "$work/ens/$f" ]] || { echo "FAIL: no ensemble $f"; failures=$((failures + 1)); }
+  done
+  grep -q '"ensemble"' "$work/ens/summary.json" || { echo "FAIL: no ensemble block in summary.json"; failures=$((failures + 1)); }
+  alone=$(cut -d, -f3 "$work/run1/deformation.csv" | tail -n +2)
+  inside=$(awk -F, 'NR == 1 { for (c = 1; c <= NF; ++c) if ($c == "seed_1_mm") col = c; next } { print $col }' \
+           "$work/ens/deformation.csv")
+  [[ -n "$alone" && "$alone" == "$inside" ]] ||
+    { echo "FAIL: seed 1 in the ensemble differs from its single run"; failures=$((failures + 1)); }
   ;;
 esac
 

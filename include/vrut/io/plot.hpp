@@ -12,6 +12,7 @@ struct PlotSeries {
   std::string title;
   std::vector<double> x, y;
   std::string style = "lines lw 2";
+  std::vector<double> y2;  // when given: a band from y to y2 (style "filledcurves ...")
 };
 
 struct PlotSpec {
@@ -39,11 +40,17 @@ inline void write_plot_png(const std::string& path, const PlotSpec& spec, const 
   std::fprintf(gp, "set grid\nset key top left\n%s\n", spec.extra.c_str());
   std::fprintf(gp, "plot ");
   for (std::size_t s = 0; s < series.size(); ++s)
-    std::fprintf(gp, "%s'-' using 1:2 with %s title %s", s ? ", " : "", series[s].style.c_str(),
-                 gnuplot_quote(series[s].title).c_str());
+    std::fprintf(gp, "%s'-' using %s with %s %s", s ? ", " : "", series[s].y2.empty() ? "1:2" : "1:2:3",
+                 series[s].style.c_str(),
+                 series[s].title.empty() ? "notitle" : ("title " + gnuplot_quote(series[s].title)).c_str());
   std::fprintf(gp, "\n");
   for (const PlotSeries& s : series) {
-    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) std::fprintf(gp, "%.10g %.10g\n", s.x[i], s.y[i]);
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+      if (s.y2.empty())
+        std::fprintf(gp, "%.10g %.10g\n", s.x[i], s.y[i]);
+      else
+        std::fprintf(gp, "%.10g %.10g %.10g\n", s.x[i], s.y[i], i < s.y2.size() ? s.y2[i] : s.y[i]);
+    }
     std::fprintf(gp, "e\n");
   }
   const int status = ::pclose(gp);

@@ -1,0 +1,54 @@
+// Ensemble statistics against values worked by hand and against the
+// textbook Student-t quantiles.
+#include <vrut/analysis/rutting_ensemble.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+TEST_CASE("ensemble statistics match hand-worked values", "[analysis][unit]") {
+  // 1..5: mean 3, sd sqrt(2.5); t(0.975, 4 dof) = 2.7764 (printed tables).
+  const auto s = vrut::describe({5.0, 1.0, 4.0, 2.0, 3.0});
+  CHECK(s.n == 5);
+  CHECK(s.mean == Approx(3.0));
+  CHECK(s.sd == Approx(std::sqrt(2.5)));
+  CHECK(s.median == Approx(3.0));
+  CHECK(s.ci_low == Approx(3.0 - 2.7764 * std::sqrt(2.5) / std::sqrt(5.0)).epsilon(1e-4));
+  CHECK(s.ci_high == Approx(3.0 + 2.7764 * std::sqrt(2.5) / std::sqrt(5.0)).epsilon(1e-4));
+  // Even count: the median is the mean of the middle two; t(0.975, 1 dof) = 12.706.
+  const auto two = vrut::describe({10.0, 20.0});
+  CHECK(two.median == Approx(15.0));
+  CHECK(two.ci_high - two.mean == Approx(12.706 * std::sqrt(50.0) / std::sqrt(2.0)).epsilon(1e-4));
+  // 90 %: t(0.95, 4 dof) = 2.1318.
+  const auto ninety = vrut::describe({5.0, 1.0, 4.0, 2.0, 3.0}, 0.90);
+  CHECK(ninety.ci_high - ninety.mean == Approx(2.1318 * std::sqrt(2.5) / std::sqrt(5.0)).epsilon(1e-4));
+  const auto one = vrut::describe({7.0});
+  CHECK(one.mean == 7.0);
+  CHECK(std::isnan(one.sd));
+  CHECK_THROWS(vrut::describe({}));
+}
+
+TEST_CASE("the ensemble's mean curve and its DS", "[analysis][unit]") {
+  // Two curves sampled at 0, 45 and 60 min: 0 / 4 / 5 mm and 0 / 6 / 9 mm.
+  // Mean curve 0 / 5 / 7 mm: DS = 15 min * 42 / 2 mm = 315 passes/mm, while
+  // the specimens' own DS are 630 and 210.
+  auto run = [](double d45, double d60) {
+    vrut::RuttingResult r;
+    for (auto [minute, d] : {std::pair<double, double>{0.0, 0.0}, {45.0, d45}, {60.0, d60}}) {
+      vrut::RuttingSample s;
+      s.minutes = minute;
+      s.deformation = d * 1e-3;
+      s.plate_pressure = 0.7e6;
+      r.samples.push_back(s);
+    }
+    vrut::finish_deformation(r, vrut::WheelTracking{});
+    return r;
+  };
+  const auto summary = vrut::summarize_rutting({run(4.0, 5.0), run(6.0, 9.0)}, vrut::WheelTracking{});
+  CHECK(summary.mean_curve.dynamic_stability == Approx(315.0));
+  CHECK(summary.dynamic_stability.mean == Approx(0.5 * (630.0 + 210.0)));
+  CHECK(summary.rut_depth.mean == Approx(7.0));
+  CHECK(summary.deformation_at_ds_start.mean == Approx(5.0));
+  CHECK(summary.deformation_sd[2] == Approx(std::sqrt(8.0) * 1e-3));
+  CHECK(summary.mean_curve.samples[1].plate_pressure == Approx(0.7e6));
+}
