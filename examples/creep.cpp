@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   app.add_option("--E2", e2, "Kelvin modulus, MPa")->capture_default_str();
   app.add_option("--eta2", eta2, "Kelvin viscosity, MPa s")->capture_default_str();
   app.add_option("--nu", cs.nu, "Poisson's ratio of the mastic, [0, 0.5)")->capture_default_str();
-  app.add_option("--conversion", conversion, "macro-to-micro rules: seed (SPEC) or calibrated")
+  app.add_option("--conversion", conversion, "macro-to-micro rules: seed (method.md) or calibrated")
       ->check(CLI::IsMember({"seed", "calibrated"}))->capture_default_str();
   app.add_option("--damping", cs.damping, "local damping coefficient")->check(CLI::Range(0.0, 0.99))
       ->capture_default_str();

@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
   app.add_option("--E2", e2, "mastic Kelvin modulus, MPa")->capture_default_str()->group("Materials");
   app.add_option("--eta2", eta2, "mastic Kelvin viscosity, MPa s")->capture_default_str()->group("Materials");
   app.add_option("--mastic-nu", mat.mastic_nu, "Poisson's ratio of the mastic")->capture_default_str()->group("Materials");
-  app.add_option("--conversion", conversion, "micro parameters: seed (SPEC rules) or calibrated (docs/burgers.md)")
+  app.add_option("--conversion", conversion, "micro parameters: seed (method.md rules) or calibrated (docs/burgers.md)")
       ->check(CLI::IsMember({"seed", "calibrated"}))->capture_default_str()->group("Materials");
   app.add_option("--mastic-aggregate-factor", mat.mastic_aggregate_factor,
                  "mastic-aggregate contacts get this times the mastic-mastic values")

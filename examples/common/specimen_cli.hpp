@@ -23,7 +23,7 @@ struct SpecimenOptions {
 };
 
 inline void add_specimen_options(CLI::App& app, SpecimenOptions& o) {
-  app.add_option("--gradation", o.gradation, "1, 2, 3 (SPEC section 2) or a CSV file sieve_mm,percent_passing")
+  app.add_option("--gradation", o.gradation, "1, 2, 3 (docs/method.md section 2) or a CSV file sieve_mm,percent_passing")
       ->capture_default_str();
   app.add_option("--seed", o.seed, "random seed")->capture_default_str();
   app.add_option("--width-mm", o.width_mm, "section width")->check(CLI::Range(1.0, 1e4))->capture_default_str();

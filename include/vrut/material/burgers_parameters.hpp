@@ -1,6 +1,6 @@
 #pragma once
 // From macroscopic material constants to contact (micro) parameters,
-// SPEC section 6. Host-only.
+// docs/method.md section 6. Host-only.
 //
 // Burger's mastic (macro E1, eta1 Maxwell; E2, eta2 Kelvin; disk width t;
 // Poisson's ratio nu of the mastic):
@@ -8,7 +8,7 @@
 //   K_ms = K_mn / (2(1+nu)) and likewise C_ms, K_ks, C_ks
 // Aggregate (linear elastic, modulus E): k_n = 2 t E, k_s = k_n / (2(1+nu)).
 // Source: the 2D DEM virtual rutting test with a Burger's contact model
-// (restated in SPEC.md), following the PFC2D convention of a disk-disk
+// (restated in docs/method.md), following the PFC2D convention of a disk-disk
 // contact of width t.
 //
 // The rules are "seed" rules: a hex packing built on them does not creep like
@@ -25,7 +25,7 @@
 namespace vrut {
 
 // Macro Burger's constants, Pa and Pa s. Defaults: asphalt mastic at 60 C
-// from dynamic shear tests (SPEC section 6).
+// from dynamic shear tests (docs/method.md section 6).
 struct BurgersMacro {
   double E1 = 4.64e6, eta1 = 83.34e6, E2 = 0.82e6, eta2 = 10.0e6;
 
@@ -58,7 +58,7 @@ inline void validate_poisson(double nu) {
 struct MicroConversion {
   double maxwell_stiffness = 1.0, maxwell_viscosity = 1.0, kelvin_stiffness = 1.0, kelvin_viscosity = 1.0;
 
-  // The SPEC's rules unchanged.
+  // The method's rules unchanged.
   static MicroConversion seed() { return {}; }
 
   // Makes a hex packing creep like the macro model. A hexagonal lattice of
@@ -96,12 +96,12 @@ inline BurgersElement burgers_element(const BurgersMacro& macro, double thicknes
 }
 
 struct BondStrength {
-  double normal = 1e30, shear = 1e30;  // N; the SPEC's bonds never break
+  double normal = 1e30, shear = 1e30;  // N; the method's bonds never break
 };
 
 // Mastic-mastic contact: Burger's in both directions, a contact bond, and
 // friction for when no bond holds. `factor` multiplies every micro parameter:
-// 1 for mastic-mastic; for mastic-aggregate the SPEC keeps 1 by default, and
+// 1 for mastic-mastic; for mastic-aggregate the method keeps 1 by default, and
 // 2 is the reading of two Burger's disks in series with one side rigid.
 inline BurgersBonded::params_type mastic_params(const BurgersMacro& macro, double thickness, double nu,
                                                 const MicroConversion& conv = MicroConversion::seed(),

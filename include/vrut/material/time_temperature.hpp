@@ -1,5 +1,5 @@
 #pragma once
-// Time-temperature superposition (SPEC section 6): with a shift factor
+// Time-temperature superposition (docs/method.md section 6): with a shift factor
 // alpha_T, viscosities and loading time are divided by alpha_T while the
 // stiffnesses stay. A linear viscoelastic model run at reduced time then
 // gives the same deformation as the unshifted one at real time; what changes

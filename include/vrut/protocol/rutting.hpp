@@ -1,5 +1,5 @@
 #pragma once
-// The virtual wheel-tracking (rutting) test, SPEC sections 1, 5 and 6:
+// The virtual wheel-tracking (rutting) test, docs/method.md sections 1, 5 and 6:
 // specimen -> DE model with the four interactions -> mould (bottom and side
 // walls) -> settling under gravity -> a loading plate of contact length
 // l = m g / (p d) at mid-span, servo-controlled to the pressure p -> loading
@@ -24,7 +24,7 @@
 
 namespace vrut {
 
-// The laboratory test (SPEC section 1); SI units.
+// The laboratory test (docs/method.md section 1); SI units.
 struct WheelTracking {
   double wheel_mass = 78.0;          // kg
   double gravity = 9.81;             // m/s^2
@@ -61,9 +61,9 @@ struct WheelTracking {
 struct RuttingMaterials {
   BurgersMacro mastic;                  // at the test temperature, 60 C
   double mastic_nu = 0.35;
-  bool calibrated_conversion = false;   // MicroConversion::calibrated instead of the SPEC's rules
+  bool calibrated_conversion = false;   // MicroConversion::calibrated instead of the method's rules
   // Calibrated on mix 2# against the laboratory (docs/validation.md), then frozen:
-  // 2 = two Burger's disks in series (one of them rigid), SPEC section 6's alternative reading.
+  // 2 = two Burger's disks in series (one of them rigid), docs/method.md section 6's alternative reading.
   double mastic_aggregate_factor = 2.0;
   double aggregate_modulus = 55.5e9;    // Pa
   double aggregate_nu = 0.25;

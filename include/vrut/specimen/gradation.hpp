@@ -1,5 +1,5 @@
 #pragma once
-// Mass gradations: the three of SPEC section 2, or a user CSV file of
+// Mass gradations: the three of docs/method.md section 2, or a user CSV file of
 // "sieve_mm,percent_passing" lines. Host-only.
 #include <algorithm>
 #include <cmath>
@@ -47,7 +47,7 @@ void validate_gradation(const Gradation& g, Where where) {
     throw std::invalid_argument(where(0) + ": the largest sieve must pass 100 %, got " + std::to_string(g.passing.front()));
 }
 
-// Gradations 1#, 2# (the reference mix) and 3# of SPEC section 2.
+// Gradations 1#, 2# (the reference mix) and 3# of docs/method.md section 2.
 inline Gradation builtin_gradation(int number) {
   const std::vector<double> sieves{19.0, 16.0, 13.2, 9.5, 4.75, 2.36};
   switch (number) {

@@ -1,6 +1,6 @@
 #pragma once
 // Hexagonally packed disks over the section, tagged by aggregate, with air
-// voids cut from the mastic (SPEC 5.2-5.4). Host-only; mm.
+// voids cut from the mastic (docs/method.md 5.2-5.4). Host-only; mm.
 #include <vrut/specimen/placement.hpp>
 
 #include <algorithm>

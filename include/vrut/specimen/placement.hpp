@@ -1,5 +1,5 @@
 #pragma once
-// Monte Carlo placement of polygonal aggregates in the section (SPEC 5.1).
+// Monte Carlo placement of polygonal aggregates in the section (docs/method.md section 5.1).
 // Host-only; mm.
 //
 // The aggregates to place are drawn first: a class with probability

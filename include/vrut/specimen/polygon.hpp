@@ -1,5 +1,5 @@
 #pragma once
-// Random polygonal aggregates (SPEC section 4) and the geometry placement
+// Random polygonal aggregates (docs/method.md section 4) and the geometry placement
 // needs. Host-only; Eigen 2-vectors; lengths in mm.
 //
 // n vertices, n uniform in [4, 10]; vertex k at radius r_k = R0 + (2 lambda - 1) R

@@ -1,5 +1,5 @@
 #pragma once
-// From a mass gradation to the 2D quantity gradation of a section, SPEC
+// From a mass gradation to the 2D quantity gradation of a section, docs/method.md
 // sections 2 and 3. Host-only; lengths in mm.
 //
 // Coarse aggregate (retained on the coarse limit, 2.36 mm) in sieve classes
