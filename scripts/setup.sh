@@ -57,33 +57,11 @@ if [[ -f "$prefix/.complete" ]] && has_backends "$prefix"; then
   echo "$prefix"; exit 0
 fi
 
-# Debian ships Kokkos 3.4.01 inside the trilinos source package. Fetch it with
-# a private apt configuration, so the machine's own apt setup stays untouched:
-# the machine's own package sources (a mirror or proxy included), turned into
-# source-package entries.
 say "building Kokkos 3.4.01 (Serial + OpenMP) into $prefix"
-work="$cache/work"; rm -rf "$work"; mkdir -p "$work/lists/partial" "$work/dl" "$work/sources.list.d"
-apt_etc=$(apt-config shell E Dir::Etc/d | sed -n "s/^E='\(.*\)'$/\1/p"); apt_etc=${apt_etc:-/etc/apt/}
-touch "$work/sources.list"
-[[ -f "$apt_etc/sources.list" ]] && sed -n 's/^[[:space:]]*deb[[:space:]]/deb-src /p' "$apt_etc/sources.list" >"$work/sources.list"
-for f in "$apt_etc"/sources.list.d/*.list; do
-  [[ -f "$f" ]] && sed -n 's/^[[:space:]]*deb[[:space:]]/deb-src /p' "$f" >"$work/sources.list.d/$(basename "$f")"
-done
-for f in "$apt_etc"/sources.list.d/*.sources; do
-  [[ -f "$f" ]] && sed 's/^Types:.*/Types: deb-src/' "$f" >"$work/sources.list.d/$(basename "$f")"
-done
-apt_opts=(-o Dir::Etc::SourceList="$work/sources.list" -o Dir::Etc::SourceParts="$work/sources.list.d"
-          -o Dir::State::Lists="$work/lists" -o Debug::NoDropPrivs=true -o APT::Sandbox::User=root)
-# An index that fails to download (a source with no source packages) is not
-# fatal here: the download of trilinos below says whether one source had it.
-{ apt-get "${apt_opts[@]}" update -q || true
-  (cd "$work/dl" && apt-get "${apt_opts[@]}" source --download-only trilinos); } >"$work/fetch.log" 2>&1 ||
-  { cat "$work/fetch.log" >&2; say "could not fetch Debian's trilinos source package from this machine's apt sources"; exit 1; }
-tarball=$(ls "$work"/dl/trilinos_*.orig.tar.* | head -n1)
-say "extracting packages/kokkos from $(basename "$tarball")"
-mkdir -p "$work/src"
-tar -xf "$tarball" -C "$work/src" --wildcards '*/packages/kokkos/*'
-src=$(ls -d "$work"/src/*/packages/kokkos)
+work="$cache/work"; rm -rf "$work"
+# shellcheck source=kokkos_source.sh
+source "$here/scripts/kokkos_source.sh"
+src=$(kokkos_source "$work") || exit 1
 
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)

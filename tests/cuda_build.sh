@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The CUDA build, checked on every run of the suite: Kokkos with CUDA for
+# sm_90 (scripts/setup_cuda.sh, built once and cached), then vrut-rutting, the
+# test binary and the core benchmark compiled and linked with nvcc_wrapper.
+# Compiling needs no GPU. Without nvcc the test is skipped (exit 77).
+#   Usage: cuda_build.sh SOURCE_DIR BUILD_DIR
+set -uo pipefail
+src=$1 build=$2
+prefix=$("$src/scripts/setup_cuda.sh" | tail -n 1); code=${PIPESTATUS[0]}
+if [[ $code -eq 77 ]]; then echo "SKIPPED: no nvcc on this machine, so no CUDA build"; exit 77; fi
+if [[ $code -ne 0 ]]; then echo "FAIL: Kokkos with CUDA did not build"; exit 1; fi
+cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DKokkos_ROOT="$prefix" \
+  -DCMAKE_CXX_COMPILER="$prefix/bin/nvcc_wrapper" >"$build.configure.log" 2>&1 ||
+  { cat "$build.configure.log"; echo "FAIL: configuring the CUDA build"; exit 1; }
+# Eigen's headers warn under nvcc; only errors matter here.
+cmake --build "$build" --target vrut-rutting vrut-tests vrut-bench-core 2>&1 | grep -E "error|\[[0-9]+/[0-9]+\]"
+[[ ${PIPESTATUS[0]} -eq 0 ]] || { echo "FAIL: the CUDA build of vrut"; exit 1; }
+# The device code really is there: vrut's contact-force kernel, compiled for
+# sm_90, in each binary's fat binary.
+for exe in examples/vrut-rutting tests/vrut-tests; do
+  objcopy -O binary --only-section=.nv_fatbin "$build/$exe" "$build/fatbin.bin" &&
+    strings "$build/fatbin.bin" >"$build/fatbin.txt" && grep -q sm_90 "$build/fatbin.txt" &&
+    grep -q 'vrut10Simulation.*contact_forces' "$build/fatbin.txt" ||
+    { echo "FAIL: no sm_90 device code for vrut's kernels in $exe"; exit 1; }
+done
+echo "PASS: vrut-rutting, vrut-tests and vrut-bench-core compile and link with CUDA for sm_90"
