@@ -43,7 +43,8 @@ creep)
   expect "1 2" "Poisson" -- --nu -0.1 --out e
   expect "1 2" "alpha_T" -- --shift 0 --out f
   expect "1 2" "alpha_T" -- --shift -1e4 --out g
-  for d in a b c d e f g; do
+  expect "1" "unstable at step [0-9]+.*time step" -- "${small[@]}" --timestep-safety 1.0 --out h
+  for d in a b c d e f g h; do
     [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
   done
   expect "0" "apparent/macro" -- --out taken --force --stress-mpa 0.01 --time-s 20 --columns 6 --rows 4
@@ -80,7 +81,8 @@ rutting)
   expect "1 2" "seed" -- --config badvalue.ini --out e
   expect "1 2" "Poisson" -- --mastic-nu 0.6 --out f
   expect "1 2" "alpha_T" -- --shift 0 --out g
-  for d in a b c d e f g; do
+  expect "1" "unstable at step [0-9]+.*time step" -- "${small[@]}" --timestep-safety 1.0 --out h
+  for d in a b c d e f g h; do
     [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
   done
   expect "0" "rut depth" -- "${small[@]}" --out run1

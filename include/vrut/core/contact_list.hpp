@@ -75,6 +75,8 @@ class ContactList {
   }
 
   // Largest displacement since the last build; a rebuild is due past skin / 2.
+  // A position that is not finite counts as a displacement of 1e300 m, so
+  // this check, made every step anyway, also finds a run that has blown up.
   double max_displacement(const execution_space& space, const Particles<memory_space>& ps) const {
     auto x = ps.position;
     auto x0 = position_at_build;
@@ -82,7 +84,8 @@ class ContactList {
     Kokkos::parallel_reduce(
         "vrut::max_displacement", Kokkos::RangePolicy<execution_space>(space, 0, ps.size()),
         KOKKOS_LAMBDA(const int i, double& acc) {
-          const double d = norm(x(i) - x0(i));
+          double d = norm(x(i) - x0(i));
+          if (!(d < 1e300)) d = 1e300;  // NaN or infinite
           if (d > acc) acc = d;
         },
         Kokkos::Max<double>(m));

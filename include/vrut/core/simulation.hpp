@@ -31,12 +31,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace vrut {
+
+// A run that blew up: some disk jumped more than a diameter in one step, or
+// its position is no longer finite.
+class SimulationUnstable : public std::runtime_error {
+ public:
+  SimulationUnstable(const std::string& what, long step) : std::runtime_error(what), step_(step) {}
+  long step() const { return step_; }  // the step (counted from 1) that made it so
+
+ private:
+  long step_;
+};
 
 struct SimulationSettings {
   double thickness = 1.0;  // out-of-plane disk width t, m: mass = rho pi r^2 t
@@ -114,6 +126,7 @@ class Simulation {
     }
     contacts_.specimens = specimens();
     if (settings_.skin < 0.0) settings_.skin = 0.2 * rmax;
+    largest_diameter_ = 2.0 * rmax;
 
     auto hp = Kokkos::create_mirror_view(law_params_);
     for (int a = 0; a < table.groups(); ++a)
@@ -225,14 +238,40 @@ class Simulation {
   // --- running --------------------------------------------------------------
   void step(double dt) {
     if (!(dt > 0.0)) throw std::invalid_argument("vrut::Simulation: dt must be positive");
-    if (contacts_.builds == 0 || contacts_.max_displacement(space_, particles_) > 0.5 * settings_.skin)
-      contacts_.rebuild(space_, particles_, settings_.skin);
+    // The list is rebuilt once a disk has moved half the skin, so a disk that
+    // has moved more than that plus a diameter jumped a diameter in one step:
+    // through its neighbours, which only a blown-up run does. A position that
+    // is not finite counts as such a jump. The check costs nothing: the
+    // displacement is measured every step anyway.
+    const double moved = contacts_.builds == 0 ? 0.0 : contacts_.max_displacement(space_, particles_);
+    if (!(moved <= 0.5 * settings_.skin + largest_diameter_)) report_instability(dt);
+    if (contacts_.builds == 0 || moved > 0.5 * settings_.skin) contacts_.rebuild(space_, particles_, settings_.skin);
     contact_forces(dt);
     sum_and_advance(dt);
     move_walls(dt);
     time_ += dt;
     ++steps_;
   }
+  // Throws SimulationUnstable naming the step that blew up (the last one
+  // done), the first disk that jumped, and the time step against the critical one.
+  [[noreturn]] void report_instability(double dt) const {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles_.position);
+    auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), contacts_.position_at_build);
+    auto s = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), particles_.specimen);
+    const double limit = 0.5 * settings_.skin + largest_diameter_;
+    std::size_t bad = 0, count = 0;
+    for (std::size_t i = x.extent(0); i-- > 0;)
+      if (!(norm(x(i) - x0(i)) <= limit)) bad = i, ++count;
+    const double critical = critical_timestep();
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "vrut: the simulation became unstable at step %ld (t = %.4g s): disk %zu (specimen %d), now at "
+                  "(%.4g, %.4g) m, and %zu more jumped more than a diameter in one step or are not finite. The time "
+                  "step %.4g s is %.3g of sqrt(m_min / k_max) = %.4g s; dense packings need 0.1 to 0.3 of it.",
+                  steps_, time_, bad, s(bad), x(bad).x, x(bad).y, count - 1, dt, dt / critical, critical);
+    throw SimulationUnstable(text, steps_);
+  }
+
   // Forces a contact-list rebuild now (it happens by itself when disks have
   // moved more than half the skin).
   void rebuild_contacts() { contacts_.rebuild(space_, particles_, settings_.skin); }
@@ -546,7 +585,7 @@ class Simulation {
   integrator_params integrator_;
   Particles<memory_space> particles_;
   Kokkos::View<params_type**, memory_space> law_params_;
-  double max_law_stiffness_ = 0.0, wall_stiffness_ = 0.0;
+  double max_law_stiffness_ = 0.0, wall_stiffness_ = 0.0, largest_diameter_ = 0.0;
   ContactList<Law, execution_space> contacts_;
 
   std::vector<Wall> walls_host_;

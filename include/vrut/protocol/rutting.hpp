@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <limits>
 #include <cmath>
 #include <functional>
@@ -140,6 +141,33 @@ inline void finish_deformation(RuttingResult& res, const WheelTracking& wt) {
                                        : std::numeric_limits<double>::infinity();
 }
 
+// Throws SimulationUnstable when a disk has left its mould (through a wall or
+// over the top): a run with too large a time step can push disks through the
+// stiff walls without any single step jumping far enough for the engine's own
+// check. Called at every sample.
+template <class Sim>
+void check_inside_moulds(Sim& sim, const std::vector<Specimen>& specimens, long step, double dt) {
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  for (int e = 0; e < static_cast<int>(specimens.size()); ++e) {
+    const double w = specimens[e].settings.placement.width * 1e-3, h = specimens[e].settings.placement.height * 1e-3;
+    const double r = specimens[e].disks.radius * 1e-3;
+    const auto [first, last] = sim.specimen_range(e);
+    for (int i = first; i < last; ++i)
+      if (!(x(i).x > -r && x(i).x < w + r && x(i).y > -r && x(i).y < 2.0 * h)) {
+        char where[160];
+        std::snprintf(where, sizeof where, "disk %d of specimen %d (seed %llu) is at (%.4g, %.4g) mm, outside its %g x %g mm mould",
+                      i - first, e, static_cast<unsigned long long>(specimens[e].settings.seed), x(i).x * 1e3,
+                      x(i).y * 1e3, w * 1e3, h * 1e3);
+        char text[400];
+        std::snprintf(text, sizeof text,
+                      "vrut: the rutting run became unstable by loading step %ld: %s. The time step is %.3g of "
+                      "sqrt(m_min / k_max); lower --timestep-safety (default 0.3).",
+                      step, where, dt / sim.critical_timestep());
+        throw SimulationUnstable(text, step);
+      }
+  }
+}
+
 // Runs the test on every specimen of an ensemble side by side in one
 // Simulation: each kernel launch serves them all, and each specimen gets its
 // own mould and plate and exactly the result of its own single run (the time
@@ -260,6 +288,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     sim.step(dt);
     const double time = s * dt;
     if (next_sample <= num.samples && (time >= t_load * next_sample / num.samples - 0.5 * dt || s == steps)) {
+      check_inside_moulds(sim, specimens, s, dt);
       const std::vector<Wall>& walls = sim.all_walls();
       const std::vector<Vec2> impulse = sim.all_wall_impulses();
       for (int e = 0; e < count; ++e) {
