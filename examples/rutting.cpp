@@ -17,12 +17,18 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 
 namespace {
+
+// Ctrl-C (SIGINT) or SIGTERM: the run stops at its next sample and writes
+// what it has.
+volatile std::sig_atomic_t stop_signal = 0;
+extern "C" void on_stop_signal(int signal) { stop_signal = signal; }
 
 // The deformed specimen at one moment: disks where they are, stones and
 // mastic in their colours, the plate in red.
@@ -221,12 +227,22 @@ int main(int argc, char** argv) {
     int used_threads = 1;
     vrut::ProgressBar bar(ensemble ? "loading " + std::to_string(specimens.size()) + " specimens" : "loading", 1000,
                           "permille");
+    std::signal(SIGINT, on_stop_signal);
+    std::signal(SIGTERM, on_stop_signal);
     const std::vector<vrut::RuttingResult> runs = vrut::dispatch_backend(backend, [&](auto space) {
       used_threads = vrut::concurrency(space);
-      return vrut::run_rutting_ensemble(specimens, wt, mat, num, space,
-                                        [&](double fraction, long) { bar.update(static_cast<long>(1000 * fraction)); });
+      return vrut::run_rutting_ensemble(
+          specimens, wt, mat, num, space, [&](double fraction, long) { bar.update(static_cast<long>(1000 * fraction)); },
+          [] { return stop_signal != 0; });
     });
-    bar.finish();
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+    if (!runs.front().interrupted) bar.finish();
+    const bool interrupted = runs.front().interrupted;
+    const double minutes_done = runs.front().samples.empty() ? 0.0 : runs.front().samples.back().minutes;
+    if (interrupted)
+      std::fprintf(stderr, "\n%s at %.1f of %.0f minutes: writing the results so far\n",
+                   stop_signal == SIGTERM ? "terminated (SIGTERM)" : "interrupted (Ctrl-C)", minutes_done, wt.minutes);
     const vrut::RuttingResult& res = runs.front();
     const vrut::RuttingEnsembleSummary summary = vrut::summarize_rutting(runs, wt);
 
@@ -322,6 +338,8 @@ int main(int argc, char** argv) {
     j["rut_depth_mm"] = summary.rut_depth.mean;
     j["dynamic_stability_passes_per_mm"] = summary.mean_curve.dynamic_stability;
     j["specimen"] = specimen_summary(sp);
+    j["interrupted"] = interrupted;
+    j["minutes_done"] = minutes_done;
     if (ensemble) {
       nlohmann::json e;
       e["seeds"] = seeds;
@@ -343,6 +361,12 @@ int main(int argc, char** argv) {
     }
     std::ofstream(dir.file("summary.json")) << j.dump(2) << '\n';
     dir.commit();
+    if (interrupted) {
+      std::printf("partial results (%.1f of %.0f minutes, no dynamic stability) in %s\n"
+                  "this run cannot be resumed: run the same command again (with --force) for the whole test\n",
+                  minutes_done, wt.minutes, out.c_str());
+      return 128 + static_cast<int>(stop_signal);
+    }
     if (ensemble) {
       const auto& r = summary.rut_depth;
       const auto& d = summary.dynamic_stability;

@@ -98,6 +98,24 @@ rutting)
   expect "0" "rut depth" -- --config run1/config.ini --out run2
   cmp -s "$work/run1/deformation.csv" "$work/run2/deformation.csv" ||
     { echo "FAIL: the written config.ini does not reproduce the run"; failures=$((failures + 1)); }
+  # Ctrl-C: the run stops at its next sample, writes the results so far, says
+  # so and exits 130 (128 + SIGINT). A test of 10 times the usual length, so
+  # that the signal comes while it loads.
+  (cd "$work" && exec "$exe" --width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e4 --settle-steps 300 \
+     --out intr >intr.out 2>intr.err) &
+  pid=$!
+  for _ in $(seq 150); do grep -q "specimen:" "$work/intr.err" 2>/dev/null && break; sleep 0.2; done
+  sleep 2
+  kill -INT "$pid"
+  wait "$pid"; code=$?
+  if [[ $code -ne 130 ]] || ! grep -q "partial results" "$work/intr.out" ||
+     ! grep -q '"interrupted": true' "$work/intr/summary.json" 2>/dev/null ||
+     [[ $(wc -l <"$work/intr/deformation.csv") -lt 3 ]]; then
+    echo "FAIL: Ctrl-C gave exit $code and no partial results:"; cat "$work/intr.out" "$work/intr.err" | tail -n 5
+    failures=$((failures + 1))
+  else
+    echo "ok:   Ctrl-C -> exit 130, partial results ($(($(wc -l <"$work/intr/deformation.csv") - 1)) samples)"
+  fi
   # Ensembles: bad seed lists are refused before anything is written ...
   expect "2" "backwards" -- "${small[@]}" --seeds 5-1 --out s1
   expect "2" "not a seed" -- "${small[@]}" --seeds 1,x --out s2

@@ -107,3 +107,23 @@ TEST_CASE("the loading follows SPEC section 1", "[rutting][unit]") {
   bad.pressure = -0.7e6;
   CHECK_THROWS_WITH(bad.validate(0.3), Catch::Contains("pressure"));
 }
+
+TEST_CASE("a rutting run asked to stop ends at that sample with what it has", "[rutting][interrupt]") {
+  const vrut::Specimen sp = small_specimen();
+  vrut::WheelTracking wt;
+  wt.minutes = 6.0;
+  wt.ds_from_minute = 4.0;
+  vrut::RuttingNumerics num = small_numerics(1e4);
+  num.samples = 30;
+  const auto whole = vrut::run_rutting<Kokkos::DefaultHostExecutionSpace>(sp, wt, {}, num);
+  int asked = 0;
+  const auto part =
+      vrut::run_rutting<Kokkos::DefaultHostExecutionSpace>(sp, wt, {}, num, {}, {}, [&] { return ++asked == 5; });
+  REQUIRE(part.samples.size() == 5);
+  CHECK(part.interrupted);
+  CHECK_FALSE(whole.interrupted);
+  CHECK(std::isnan(part.dynamic_stability));
+  CHECK(part.snapshots.size() == 1);  // taken where it stopped, for the pictures
+  for (std::size_t k = 0; k < 5; ++k) CHECK(part.samples[k].deformation == whole.samples[k].deformation);
+  CHECK(part.steps < whole.steps);
+}

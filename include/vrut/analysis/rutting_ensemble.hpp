@@ -37,6 +37,7 @@ inline RuttingEnsembleSummary summarize_rutting(const std::vector<RuttingResult>
   out.deformation_final = describe(d60, confidence);
   out.dynamic_stability = describe(ds, confidence);
   out.mean_curve.samples = runs.front().samples;
+  out.mean_curve.interrupted = runs.front().interrupted;
   for (std::size_t k = 0; k < samples; ++k) {
     std::vector<double> d;
     double pressure = 0.0;

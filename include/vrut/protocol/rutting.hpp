@@ -105,6 +105,7 @@ struct RuttingResult {
   double plate_x0 = 0.0, plate_x1 = 0.0, plate_y_final = 0.0;     // m
   std::size_t particles = 0;
   int contacts = 0, bonds = 0;
+  bool interrupted = false;                // stopped early on request: the samples so far, no DS
   long steps = 0;
   double dt = 0.0, wall_seconds = 0.0;
 };
@@ -134,11 +135,18 @@ inline void finish_deformation(RuttingResult& res, const WheelTracking& wt) {
       }
     return res.samples.back().deformation;
   };
+  if (res.samples.empty()) {
+    res.deformation_at_ds_start = res.deformation_final = 0.0;
+    res.dynamic_stability = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
   res.deformation_at_ds_start = deformation_at(wt.ds_from_minute);
   res.deformation_final = res.samples.back().deformation;
   const double dd_mm = (res.deformation_final - res.deformation_at_ds_start) * 1e3;
   res.dynamic_stability = dd_mm > 0.0 ? (wt.minutes - wt.ds_from_minute) * wt.passes_per_minute / dd_mm
                                        : std::numeric_limits<double>::infinity();
+  // A run stopped before the end of the test has no DS.
+  if (res.interrupted) res.dynamic_stability = std::numeric_limits<double>::quiet_NaN();
 }
 
 // Throws SimulationUnstable when a disk has left its mould (through a wall or
@@ -172,12 +180,15 @@ void check_inside_moulds(Sim& sim, const std::vector<Specimen>& specimens, long 
 // Simulation: each kernel launch serves them all, and each specimen gets its
 // own mould and plate and exactly the result of its own single run (the time
 // step is the smallest any of them needs; with one disk radius it is the same
-// for all). progress(fraction of the loading time done, steps done).
+// for all). progress(fraction of the loading time done, steps done). stop()
+// is asked at every sample: when it says true (Ctrl-C, say) the run ends
+// there, with the samples so far, a last snapshot, and `interrupted` set.
 template <class Space>
 std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& specimens, const WheelTracking& wt,
                                                 const RuttingMaterials& mat, const RuttingNumerics& num,
                                                 const Space& space = Space(),
-                                                const std::function<void(double, long)>& progress = {}) {
+                                                const std::function<void(double, long)>& progress = {},
+                                                const std::function<bool()>& stop = {}) {
   if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
   if (!(num.timestep_safety > 0.0 && num.timestep_safety <= 1.0)) throw std::invalid_argument("time-step safety must lie in (0, 1]");
   if (num.samples < 10) throw std::invalid_argument("at least 10 samples");
@@ -282,6 +293,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   int next_sample = 1, next_snapshot = 1;
   std::vector<Vec2> last_impulse(count);
   double last_time = 0.0;
+  long done = steps;
   for (long s = 1; s <= steps; ++s) {
     if (s <= ramp_steps && (s % 50 == 1 || s == ramp_steps))
       ramp_to(std::min(1.0, static_cast<double>(s) / ramp_steps));
@@ -305,6 +317,12 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
       last_time = time;
       ++next_sample;
       if (progress) progress(time / t_load, s);
+      if (stop && s < steps && stop()) {
+        done = s;
+        if (next_snapshot <= 3) snapshot(time / t_load);
+        for (auto& r : results) r.interrupted = true;
+        break;
+      }
     }
     if (next_snapshot <= 3 && (s >= steps * next_snapshot / 3)) {
       snapshot(next_snapshot / 3.0);
@@ -319,7 +337,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   for (int e = 0; e < count; ++e) {
     RuttingResult& res = results[e];
     res.wall_seconds = seconds;
-    res.steps = steps;
+    res.steps = done;
     res.contacts = sim.active_contacts(e);
     res.plate_y_final = walls[plate[e]].start.y;
     const auto [first, last] = sim.specimen_range(e);
@@ -336,8 +354,9 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
 template <class Space>
 RuttingResult run_rutting(const Specimen& sp, const WheelTracking& wt, const RuttingMaterials& mat,
                           const RuttingNumerics& num, const Space& space = Space(),
-                          const std::function<void(double, long)>& progress = {}) {
-  return run_rutting_ensemble(std::vector<Specimen>{sp}, wt, mat, num, space, progress).front();
+                          const std::function<void(double, long)>& progress = {},
+                          const std::function<bool()>& stop = {}) {
+  return run_rutting_ensemble(std::vector<Specimen>{sp}, wt, mat, num, space, progress, stop).front();
 }
 
 }  // namespace vrut
