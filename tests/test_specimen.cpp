@@ -190,3 +190,12 @@ TEST_CASE("an unreachable area fraction fails with what was reached", "[specimen
   s.placement.attempts = 200;
   CHECK_THROWS_WITH(vrut::generate_specimen(s), Catch::Contains("cannot reach") && Catch::Contains("area fraction"));
 }
+
+// Found by fuzzing the gradation reader: a gradation whose smallest sieve is
+// above 2.36 mm leaves the coarse fraction unknown. It must be refused as bad
+// input, saying why, not fail deep inside with an out-of-range error.
+TEST_CASE("a gradation that stops above the coarse limit is refused", "[specimen][stereology]") {
+  const vrut::Gradation g{"short", {38.0, 16.0, 13.0}, {100.0, 95.0, 34.0}};
+  CHECK_THROWS_AS(vrut::stereology(g, vrut::MixVolumetrics{}), std::invalid_argument);
+  CHECK_THROWS_WITH(vrut::stereology(g, vrut::MixVolumetrics{}), Catch::Contains("must reach the 2.36"));
+}

@@ -58,11 +58,10 @@ inline Gradation builtin_gradation(int number) {
   }
 }
 
-// Reads "sieve_mm,percent_passing" lines (a header line of that text, blank
-// lines and lines starting with # are skipped). Errors name the line.
-inline Gradation read_gradation_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("cannot open gradation file '" + path + "'");
+// Parses "sieve_mm,percent_passing" lines (a header line of that text, blank
+// lines and lines starting with # are skipped). Errors (std::invalid_argument)
+// name the line; `path` names the source in them.
+inline Gradation parse_gradation_csv(std::istream& in, const std::string& path) {
   Gradation g;
   g.name = path;
   std::vector<int> line_of;
@@ -97,6 +96,13 @@ inline Gradation read_gradation_csv(const std::string& path) {
   if (g.sieve_mm.empty()) throw std::invalid_argument(path + ": no sieve lines");
   validate_gradation(g, [&](std::size_t i) { return path + ":" + std::to_string(line_of[i]); });
   return g;
+}
+
+// Reads a gradation CSV file (parse_gradation_csv).
+inline Gradation read_gradation_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument("cannot open gradation file '" + path + "'");
+  return parse_gradation_csv(in, path);
 }
 
 // "1", "2", "3" or a file name.

@@ -81,6 +81,12 @@ inline Stereology stereology(const Gradation& g, const MixVolumetrics& mix) {
   const double limit = mix.coarse_limit_mm;
   if (!(g.sieve_mm.front() > limit))
     throw std::invalid_argument("gradation " + g.name + " has no aggregate above the coarse limit");
+  // Found by fuzzing: without a sieve at or below the limit the coarse
+  // fraction is unknown (it surfaced as an out-of-range error deep inside).
+  if (!(g.sieve_mm.back() <= limit))
+    throw std::invalid_argument("gradation " + g.name + " must reach the " + std::to_string(limit) +
+                                " mm sieve (coarse aggregate is everything retained on it): its smallest sieve is " +
+                                std::to_string(g.sieve_mm.back()) + " mm");
   std::vector<double> bounds;  // ascending: limit, then every sieve above it
   bounds.push_back(limit);
   for (std::size_t i = g.sieve_mm.size(); i-- > 0;)
