@@ -9,10 +9,10 @@
 #include <vrut/contact/linear.hpp>
 #include <vrut/core/assignment.hpp>
 #include <vrut/core/contact_list.hpp>
-#include <vrut/core/particle_set.hpp>
-#include <vrut/core/particles.hpp>
+#include <vrut/data/particle_set.hpp>
+#include <vrut/data/particles.hpp>
 #include <vrut/core/simulation.hpp>
-#include <vrut/core/vec2.hpp>
-#include <vrut/core/walls.hpp>
+#include <vrut/data/vec2.hpp>
+#include <vrut/data/walls.hpp>
 #include <vrut/integrate/central_difference.hpp>
 #include <vrut/servo/servo.hpp>

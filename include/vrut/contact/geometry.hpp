@@ -5,7 +5,7 @@
 // tangent is the normal turned by +90 degrees. A positive normal force pushes
 // the bodies apart (compression); a negative one is tension (bonded only).
 // The shear force is the tangential force on the second body.
-#include <vrut/core/vec2.hpp>
+#include <vrut/data/vec2.hpp>
 
 #include <Kokkos_Core.hpp>
 

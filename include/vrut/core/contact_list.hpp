@@ -7,7 +7,7 @@
 // The disks of an ensemble's specimens share the grid's geometry, but each
 // specimen has its own layer of cells, so pairs never cross specimens.
 #include <vrut/contact/concept.hpp>
-#include <vrut/core/particles.hpp>
+#include <vrut/data/particles.hpp>
 
 #include <Kokkos_Core.hpp>
 

@@ -21,9 +21,9 @@
 #include <vrut/contact/concept.hpp>
 #include <vrut/core/assignment.hpp>
 #include <vrut/core/contact_list.hpp>
-#include <vrut/core/particle_set.hpp>
-#include <vrut/core/particles.hpp>
-#include <vrut/core/walls.hpp>
+#include <vrut/data/particle_set.hpp>
+#include <vrut/data/particles.hpp>
+#include <vrut/data/walls.hpp>
 #include <vrut/integrate/central_difference.hpp>
 #include <vrut/servo/servo.hpp>
 

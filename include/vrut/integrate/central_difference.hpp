@@ -5,7 +5,7 @@
 // which removes energy in proportion to the unbalanced force, not to speed.
 // Velocities live at half steps: v(t+dt/2) = v(t-dt/2) + F_d/m dt,
 // x(t+dt) = x(t) + v(t+dt/2) dt.
-#include <vrut/core/particles.hpp>
+#include <vrut/data/particles.hpp>
 
 #include <Kokkos_Core.hpp>
 

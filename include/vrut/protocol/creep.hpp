@@ -6,7 +6,7 @@
 // wall contacts does not enter. Time runs reduced by the shift factor; the
 // samples carry both times.
 #include <vrut/contact/composite.hpp>
-#include <vrut/core/particle_set.hpp>
+#include <vrut/data/particle_set.hpp>
 #include <vrut/core/simulation.hpp>
 #include <vrut/material/burgers_parameters.hpp>
 

@@ -2,7 +2,7 @@
 // Wall controllers: policies that set a wall's velocity once per step from
 // the load the disks put on it.
 #include <vrut/contact/geometry.hpp>
-#include <vrut/core/walls.hpp>
+#include <vrut/data/walls.hpp>
 #include <vrut/integrate/central_difference.hpp>
 
 #include <Kokkos_Core.hpp>

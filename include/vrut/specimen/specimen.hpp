@@ -1,7 +1,7 @@
 #pragma once
 // The digital specimen: gradation -> stereology -> aggregates -> disks.
 // Same settings and seed, same specimen. Host-only; mm.
-#include <vrut/core/particle_set.hpp>
+#include <vrut/data/particle_set.hpp>
 #include <vrut/specimen/packing.hpp>
 #include <vrut/specimen/placement.hpp>
 #include <vrut/specimen/stereology.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // Straight walls (segments) and the disk-wall contact geometry.
-#include <vrut/core/vec2.hpp>
+#include <vrut/data/vec2.hpp>
 
 #include <Kokkos_Core.hpp>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Disk state as a structure of arrays, one Kokkos::View per quantity.
-#include <vrut/core/vec2.hpp>
+#include <vrut/data/vec2.hpp>
 
 #include <Kokkos_Core.hpp>
 
