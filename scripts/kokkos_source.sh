@@ -1,4 +1,5 @@
-# Sourced by setup.sh and setup_cuda.sh: fetches Kokkos 3.4.01 from Debian.
+# Sourced by setup.sh and setup_cuda.sh: fetches Kokkos 3.4.01 from Debian
+# and builds it.
 # Debian ships it inside the trilinos source package. It is fetched with a
 # private apt configuration, so the machine's own apt setup stays untouched:
 # the machine's own package sources (a mirror or proxy included), turned into
@@ -32,4 +33,21 @@ kokkos_source() {
   mkdir -p "$work/src"
   tar -xf "$tarball" -C "$work/src" --wildcards '*/packages/kokkos/*' || return 1
   ls -d "$work"/src/*/packages/kokkos
+}
+
+#   kokkos_build SRC WORK PREFIX LOG [CMAKE ARGS...]   configures, builds and
+#   installs the Kokkos in SRC into PREFIX (a Release build, C++17), marks it
+#   complete and removes WORK; on failure shows the log's end and returns 1.
+kokkos_build() {
+  local src=$1 work=$2 prefix=$3 log=$4; shift 4
+  local generator=()
+  command -v ninja >/dev/null && generator=(-G Ninja)
+  {
+    cmake -S "$src" -B "$work/build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_CXX_STANDARD=17 "$@" &&
+    cmake --build "$work/build" --parallel "$(nproc)" &&
+    cmake --install "$work/build"
+  } >"$log" 2>&1 || { tail -n 60 "$log" >&2; say "Kokkos build failed; full log: $log"; return 1; }
+  touch "$prefix/.complete"
+  rm -rf "$work"
 }

@@ -63,18 +63,7 @@ work="$cache/work"; rm -rf "$work"
 source "$here/scripts/kokkos_source.sh"
 src=$(kokkos_source "$work") || exit 1
 
-generator=()
-command -v ninja >/dev/null && generator=(-G Ninja)
-log="$cache/kokkos-build.log"
-{
-  cmake -S "$src" -B "$work/build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_CXX_STANDARD=17 \
-    -DKokkos_ENABLE_SERIAL=ON -DKokkos_ENABLE_OPENMP=ON \
-    -DCMAKE_POSITION_INDEPENDENT_CODE=ON &&
-  cmake --build "$work/build" --parallel "$(nproc)" &&
-  cmake --install "$work/build"
-} >"$log" 2>&1 || { tail -n 40 "$log" >&2; say "Kokkos build failed; full log: $log"; exit 1; }
+kokkos_build "$src" "$work" "$prefix" "$cache/kokkos-build.log" \
+  -DKokkos_ENABLE_SERIAL=ON -DKokkos_ENABLE_OPENMP=ON -DCMAKE_POSITION_INDEPENDENT_CODE=ON || exit 1
 say "Kokkos installed in $prefix"
-touch "$prefix/.complete"
-rm -rf "$work"
 echo "$prefix"

@@ -50,17 +50,7 @@ grep -q '^default_arch="sm_90"' "$src/bin/nvcc_wrapper" || { say "fix 3 did not 
 sed -i 's/CHECK_CUDA_ARCH(AMPERE80  sm_80)/CHECK_CUDA_ARCH(AMPERE80  sm_90)/' "$src/cmake/kokkos_arch.cmake"
 grep -q 'CHECK_CUDA_ARCH(AMPERE80  sm_90)' "$src/cmake/kokkos_arch.cmake" || { say "fix 4 did not apply"; exit 1; }
 
-generator=()
-command -v ninja >/dev/null && generator=(-G Ninja)
-log="$cache/kokkos-cuda-build.log"
-{
-  cmake -S "$src" -B "$work/build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_INSTALL_PREFIX="$prefix" -DCMAKE_CXX_STANDARD=17 -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" \
-    -DKokkos_ENABLE_SERIAL=ON -DKokkos_ENABLE_CUDA=ON -DKokkos_ENABLE_CUDA_LAMBDA=ON -DKokkos_ARCH_AMPERE80=ON &&
-  cmake --build "$work/build" --parallel "$(nproc)" &&
-  cmake --install "$work/build"
-} >"$log" 2>&1 || { tail -n 60 "$log" >&2; say "Kokkos CUDA build failed; full log: $log"; exit 1; }
+kokkos_build "$src" "$work" "$prefix" "$cache/kokkos-cuda-build.log" -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" \
+  -DKokkos_ENABLE_SERIAL=ON -DKokkos_ENABLE_CUDA=ON -DKokkos_ENABLE_CUDA_LAMBDA=ON -DKokkos_ARCH_AMPERE80=ON || exit 1
 say "Kokkos (CUDA) installed in $prefix"
-touch "$prefix/.complete"
-rm -rf "$work"
 echo "$prefix"
