@@ -112,6 +112,10 @@ class Simulation {
       rmax = std::max(rmax, set.radius[i]);
     }
     specimen_begin_host_.push_back(n);
+    int largest = 0;  // the wall loads are summed in blocks of the largest specimen
+    for (int s = 0; s < specimens(); ++s)
+      largest = std::max(largest, specimen_begin_host_[s + 1] - specimen_begin_host_[s]);
+    wall_blocks_ = (largest + reduce_block - 1) / reduce_block;
     Kokkos::deep_copy(particles_.position, h);
     Kokkos::deep_copy(particles_.radius, hr);
     Kokkos::deep_copy(particles_.mass, hm);
@@ -438,10 +442,7 @@ class Simulation {
   void move_walls(double dt) {
     const int nwalls = walls();
     if (nwalls == 0) return;
-    int largest = 0;
-    for (int s = 0; s < specimens(); ++s)
-      largest = std::max(largest, specimen_begin_host_[s + 1] - specimen_begin_host_[s]);
-    const int blocks = (largest + reduce_block - 1) / reduce_block;
+    const int blocks = wall_blocks_;
     if (block_load_.extent(0) != static_cast<std::size_t>(blocks) || block_load_.extent(1) != static_cast<std::size_t>(nwalls))
       block_load_ = Kokkos::View<WallLoad**, memory_space>("wall_block_load", blocks, nwalls);
     auto bl = block_load_;
@@ -586,6 +587,7 @@ class Simulation {
   Particles<memory_space> particles_;
   Kokkos::View<params_type**, memory_space> law_params_;
   double max_law_stiffness_ = 0.0, wall_stiffness_ = 0.0, largest_diameter_ = 0.0;
+  int wall_blocks_ = 0;
   ContactList<Law, execution_space> contacts_;
 
   std::vector<Wall> walls_host_;
