@@ -1,6 +1,7 @@
 // Serial and OpenMP give the same trajectories: contact forces are summed in
 // a fixed order on every backend, so the results are bitwise equal; the test
 // allows 1e-12 relative.
+#include "shaken_box.hpp"
 #include "spaces.hpp"
 
 #include <vrut/vrut.hpp>
@@ -24,17 +25,8 @@ std::vector<double> shake(long steps) {
   for (int row = 0; row < 25; ++row)
     for (int col = 0; col < 40; ++col)
       set.add(0.003 + 0.0025 * col, 0.003 + 0.0025 * row, 0.0008 + 0.0003 * u(rng), 2700.0, (row + col) % 2);
-  AssignmentTable<Linear> table(2);
-  table.set(0, 0, linear_params(1e6, 5e5, 0.5));
-  table.set(1, 1, linear_params(2e6, 1e6, 0.3));
-  table.set(0, 1, linear_params(1.5e6, 7e5, 0.4));
-  SimulationSettings settings;
-  settings.thickness = 0.05;
-  settings.gravity = {0.0, -9.81};
-  CentralDifference::params_type integrator;
-  integrator.damping = 0.1;
-  Simulation<Linear, Space> sim(set, table, settings, integrator);
-  const auto wall_law = linear_params(2e6, 1e6, 0.5);
+  auto sim = vrut_test::shaken_box_simulation<Space>(set);
+  const auto wall_law = vrut_test::shaken_box_wall_law();
   sim.add_wall(Wall{{0.0, 0.0}, {0.11, 0.0}, {}}, wall_law);
   sim.add_wall(Wall{{0.0, 0.2}, {0.0, 0.0}, {}}, wall_law);
   sim.add_wall(Wall{{0.11, 0.0}, {0.11, 0.2}, {}}, wall_law);

@@ -2,6 +2,7 @@
 // never interact, so each must follow, bit for bit, the trajectory of its own
 // single run. The specimens below overlap in space on purpose: only the
 // specimen index keeps them apart.
+#include "shaken_box.hpp"
 #include "spaces.hpp"
 
 #include <vrut/protocol/rutting.hpp>
@@ -55,17 +56,8 @@ std::vector<std::vector<double>> run_boxes(const std::vector<Box>& boxes, long s
     const auto v = box_velocities(b.seed, one.size());
     velocity.insert(velocity.end(), v.begin(), v.end());
   }
-  AssignmentTable<Linear> table(2);
-  table.set(0, 0, linear_params(1e6, 5e5, 0.5));
-  table.set(1, 1, linear_params(2e6, 1e6, 0.3));
-  table.set(0, 1, linear_params(1.5e6, 7e5, 0.4));
-  SimulationSettings settings;
-  settings.thickness = 0.05;
-  settings.gravity = {0.0, -9.81};
-  CentralDifference::params_type integrator;
-  integrator.damping = 0.1;
-  Simulation<Linear, Space> sim(all, table, settings, integrator);
-  const auto wall_law = linear_params(2e6, 1e6, 0.5);
+  auto sim = vrut_test::shaken_box_simulation<Space>(all);
+  const auto wall_law = vrut_test::shaken_box_wall_law();
   std::vector<int> bottom;
   for (int e = 0; e < static_cast<int>(boxes.size()); ++e) {
     bottom.push_back(sim.add_wall(Wall{{0.0, 0.0}, {0.11, 0.0}, {}}, wall_law, {}, e));
