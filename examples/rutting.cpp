@@ -7,6 +7,7 @@
 
 #include <vrut/analysis/rutting_ensemble.hpp>
 #include <vrut/backend.hpp>
+#include <vrut/io/checkpoint.hpp>
 #include <vrut/io/output_dir.hpp>
 #include <vrut/io/plot.hpp>
 #include <vrut/io/progress.hpp>
@@ -20,7 +21,9 @@
 #include <csignal>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <optional>
 #include <iostream>
 
 namespace {
@@ -114,41 +117,60 @@ nlohmann::json statistics_json(const vrut::SampleStatistics& s) {
   return j;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  using namespace specimen_cli;
-  SpecimenOptions so;
-  so.disk_radius_mm = 1.0;  // the rutting default: a full test in minutes on 2 cores (docs/rutting.md)
+// Every option of a run: parsed from the command line, or on --resume from
+// the arguments the checkpoint stored.
+struct RunOptions {
+  specimen_cli::SpecimenOptions so;
   vrut::WheelTracking wt;
   vrut::RuttingMaterials mat;
   vrut::RuttingNumerics num;
-  std::string backend = "openmp", out = "out/rutting", conversion = "seed";
+  std::string backend = "openmp", out = "out/rutting", conversion = "seed", seeds_text;
   int threads = 0;
   bool force = false;
-  std::string seeds_text;
-  double e1 = mat.mastic.E1 * 1e-6, eta1 = mat.mastic.eta1 * 1e-6, e2 = mat.mastic.E2 * 1e-6,
-         eta2 = mat.mastic.eta2 * 1e-6;
-  double pressure_mpa = wt.pressure * 1e-6, wheel_width_mm = wt.wheel_width * 1e3, travel_mm = wt.travel * 1e3;
-  double aggregate_gpa = mat.aggregate_modulus * 1e-9;
+  double checkpoint_every = 0.0;
+  double e1 = 0, eta1 = 0, e2 = 0, eta2 = 0, pressure_mpa = 0, wheel_width_mm = 0, travel_mm = 0, aggregate_gpa = 0;
 
-  CLI::App app("vrut-rutting: virtual wheel-tracking (rutting) test of an asphalt mixture, DEM with Burger's mastic");
+  RunOptions() {
+    so.disk_radius_mm = 1.0;  // the rutting default: a full test in minutes on 2 cores (docs/rutting.md)
+    e1 = mat.mastic.E1 * 1e-6, eta1 = mat.mastic.eta1 * 1e-6, e2 = mat.mastic.E2 * 1e-6, eta2 = mat.mastic.eta2 * 1e-6;
+    pressure_mpa = wt.pressure * 1e-6, wheel_width_mm = wt.wheel_width * 1e3, travel_mm = wt.travel * 1e3;
+    aggregate_gpa = mat.aggregate_modulus * 1e-9;
+  }
+  // The model in SI units, from the options as typed.
+  void convert() {
+    mat.mastic = {e1 * 1e6, eta1 * 1e6, e2 * 1e6, eta2 * 1e6};
+    mat.calibrated_conversion = conversion == "calibrated";
+    mat.aggregate_modulus = aggregate_gpa * 1e9;
+    wt.pressure = pressure_mpa * 1e6;
+    wt.wheel_width = wheel_width_mm * 1e-3;
+    wt.travel = travel_mm * 1e-3;
+  }
+};
+
+// Options that a resumed run may change: where and how fast it runs, not what.
+const std::vector<std::string> resumable_options = {"--backend", "--threads", "--checkpoint-every"};
+
+void add_run_options(CLI::App& app, RunOptions& o) {
+  using namespace specimen_cli;
+  auto& mat = o.mat;
+  auto& wt = o.wt;
+  auto& num = o.num;
   app.set_config("--config", "", "read options from this file (INI/TOML, as written to DIR/config.ini)");
   app.allow_config_extras(false);  // an unknown key in a config file is an error
-  add_specimen_options(app, so);
-  app.add_option("--seeds", seeds_text,
+  add_specimen_options(app, o.so);
+  app.add_option("--seeds", o.seeds_text,
                  "an ensemble: specimens of these seeds, run side by side, e.g. 1-16 or 1,4,9 (instead of --seed)");
-  app.add_option("--E1", e1, "mastic Maxwell modulus at 60 C, MPa")->capture_default_str()->group("Materials");
-  app.add_option("--eta1", eta1, "mastic Maxwell viscosity, MPa s")->capture_default_str()->group("Materials");
-  app.add_option("--E2", e2, "mastic Kelvin modulus, MPa")->capture_default_str()->group("Materials");
-  app.add_option("--eta2", eta2, "mastic Kelvin viscosity, MPa s")->capture_default_str()->group("Materials");
+  app.add_option("--E1", o.e1, "mastic Maxwell modulus at 60 C, MPa")->capture_default_str()->group("Materials");
+  app.add_option("--eta1", o.eta1, "mastic Maxwell viscosity, MPa s")->capture_default_str()->group("Materials");
+  app.add_option("--E2", o.e2, "mastic Kelvin modulus, MPa")->capture_default_str()->group("Materials");
+  app.add_option("--eta2", o.eta2, "mastic Kelvin viscosity, MPa s")->capture_default_str()->group("Materials");
   app.add_option("--mastic-nu", mat.mastic_nu, "Poisson's ratio of the mastic")->capture_default_str()->group("Materials");
-  app.add_option("--conversion", conversion, "micro parameters: seed (method.md rules) or calibrated (docs/burgers.md)")
+  app.add_option("--conversion", o.conversion, "micro parameters: seed (method.md rules) or calibrated (docs/burgers.md)")
       ->check(CLI::IsMember({"seed", "calibrated"}))->capture_default_str()->group("Materials");
   app.add_option("--mastic-aggregate-factor", mat.mastic_aggregate_factor,
                  "mastic-aggregate contacts get this times the mastic-mastic values")
       ->check(CLI::PositiveNumber)->capture_default_str()->group("Materials");
-  app.add_option("--aggregate-modulus-gpa", aggregate_gpa, "aggregate Young's modulus")->check(CLI::PositiveNumber)
+  app.add_option("--aggregate-modulus-gpa", o.aggregate_gpa, "aggregate Young's modulus")->check(CLI::PositiveNumber)
       ->capture_default_str()->group("Materials");
   app.add_option("--aggregate-nu", mat.aggregate_nu, "aggregate Poisson's ratio")->capture_default_str()->group("Materials");
   app.add_option("--mastic-density", mat.mastic_density, "kg/m^3")->check(CLI::PositiveNumber)->capture_default_str()
@@ -159,11 +181,11 @@ int main(int argc, char** argv) {
       ->capture_default_str()->group("Materials");
   app.add_option("--wall-friction", mat.wall_friction, "mould and plate friction")->check(CLI::Range(0.0, 10.0))
       ->capture_default_str()->group("Materials");
-  app.add_option("--pressure-mpa", pressure_mpa, "wheel contact pressure p")->capture_default_str()->group("Loading");
+  app.add_option("--pressure-mpa", o.pressure_mpa, "wheel contact pressure p")->capture_default_str()->group("Loading");
   app.add_option("--wheel-mass-kg", wt.wheel_mass, "wheel mass m")->capture_default_str()->group("Loading");
-  app.add_option("--wheel-width-mm", wheel_width_mm, "wheel width d (= disk thickness t)")->capture_default_str()
+  app.add_option("--wheel-width-mm", o.wheel_width_mm, "wheel width d (= disk thickness t)")->capture_default_str()
       ->group("Loading");
-  app.add_option("--travel-mm", travel_mm, "wheel travel")->capture_default_str()->group("Loading");
+  app.add_option("--travel-mm", o.travel_mm, "wheel travel")->capture_default_str()->group("Loading");
   app.add_option("--passes-per-minute", wt.passes_per_minute, "N")->capture_default_str()->group("Loading");
   app.add_option("--minutes", wt.minutes, "test duration")->capture_default_str()->group("Loading");
   app.add_option("--shift", num.shift, "time-temperature shift factor alpha_T")->capture_default_str()->group("Numerics");
@@ -175,22 +197,92 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0L, 100000000L))->capture_default_str()->group("Numerics");
   app.add_option("--samples", num.samples, "points of the deformation curve")->check(CLI::Range(10, 100000))
       ->capture_default_str()->group("Numerics");
-  app.add_option("--backend", backend, "Kokkos backend")->check(CLI::IsMember(vrut::available_backends()))
+  app.add_option("--backend", o.backend, "Kokkos backend")->check(CLI::IsMember(vrut::available_backends()))
       ->capture_default_str()->group("Numerics");
-  app.add_option("--threads", threads, "host threads (0: OMP_NUM_THREADS)")->check(CLI::Range(0, 1024))
+  app.add_option("--threads", o.threads, "host threads (0: OMP_NUM_THREADS)")->check(CLI::Range(0, 1024))
       ->capture_default_str()->group("Numerics");
-  app.add_option("--out", out, "output folder")->capture_default_str();
-  app.add_flag("--force", force, "overwrite an existing output folder");
+  app.add_option("--checkpoint-every", o.checkpoint_every,
+                 "write DIR/checkpoint.vrut every this many seconds (0: only on Ctrl-C); resume with --resume DIR")
+      ->check(CLI::Range(0.0, 1e9))->capture_default_str()->group("Runs");
+  app.add_option("--out", o.out, "output folder")->capture_default_str()->group("Runs");
+  app.add_flag("--force", o.force, "overwrite an existing output folder")->group("Runs");
+}
+
+// The checkpoint's options, parsed as they were, with the resumable ones
+// taken from this command line. A run whose --config file has changed since
+// is refused: it would not be the same run.
+RunOptions options_to_resume(const CLI::App& command_line, const RunOptions& given, const vrut::CheckpointFile& file) {
+  for (const CLI::Option* opt : command_line.get_options())
+    if (opt->count() > 0 && opt->get_name() != "--resume" &&
+        std::find(resumable_options.begin(), resumable_options.end(), opt->get_name()) == resumable_options.end())
+      throw std::invalid_argument("--resume takes every option from the checkpoint; only --backend, --threads and "
+                                  "--checkpoint-every may be given with it, not " + opt->get_name());
+  RunOptions o;
+  CLI::App stored;
+  add_run_options(stored, o);
+  auto args = file.header().at("argv").get<std::vector<std::string>>();
+  std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+  try {
+    stored.parse(args);
+  } catch (const CLI::ParseError& e) {
+    throw std::invalid_argument("the options stored in " + file.path().string() + " no longer parse: " + e.what());
+  }
+  if (stored.config_to_str(true, false) != file.header().at("config").get<std::string>())
+    throw std::invalid_argument("the options of " + file.path().string() +
+                                " read differently now (has its --config file changed?): it cannot be resumed");
+  for (const std::string& name : resumable_options)
+    if (command_line.count(name) > 0) {
+      if (name == "--backend") o.backend = given.backend;
+      if (name == "--threads") o.threads = given.threads;
+      if (name == "--checkpoint-every") o.checkpoint_every = given.checkpoint_every;
+    }
+  o.force = true;  // the folder is this run's own
+  return o;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  RunOptions given;
+  std::string resume;
+  CLI::App app("vrut-rutting: virtual wheel-tracking (rutting) test of an asphalt mixture, DEM with Burger's mastic");
+  add_run_options(app, given);
+  app.add_option("--resume", resume, "go on with the run whose checkpoint is in this folder, with its options")
+      ->group("Runs")->configurable(false);
   if (const int code = cli::parse(app, argc, argv); code >= 0) return code;
 
   return cli::guarded([&] {
-    vrut::OutputDir dir(out, force);
-    mat.mastic = {e1 * 1e6, eta1 * 1e6, e2 * 1e6, eta2 * 1e6};
-    mat.calibrated_conversion = conversion == "calibrated";
-    mat.aggregate_modulus = aggregate_gpa * 1e9;
-    wt.pressure = pressure_mpa * 1e6;
-    wt.wheel_width = wheel_width_mm * 1e-3;
-    wt.travel = travel_mm * 1e-3;
+    namespace fs = std::filesystem;
+    std::optional<vrut::CheckpointFile> checkpoint;
+    RunOptions o = given;
+    std::string config_text = app.config_to_str(true, true);
+    if (!resume.empty()) {
+      const fs::path file = fs::path(resume) / "checkpoint.vrut";
+      if (!fs::exists(file))
+        throw std::invalid_argument("no checkpoint in " + resume + " (" + file.string() +
+                                    "): a run writes one on Ctrl-C, or every --checkpoint-every seconds");
+      checkpoint = vrut::CheckpointFile::resume(file, given.checkpoint_every);
+      o = options_to_resume(app, given, *checkpoint);
+      checkpoint->set_interval(o.checkpoint_every);
+      o.out = resume;
+      config_text = checkpoint->header().at("config_with_help").get<std::string>();
+    } else {
+      if (fs::exists(fs::path(given.out) / "checkpoint.vrut") && !given.force)
+        throw std::invalid_argument("'" + given.out + "' holds the checkpoint of an unfinished run: go on with it "
+                                    "with --resume " + given.out + ", or start again with --force");
+      nlohmann::json header;
+      header["argv"] = std::vector<std::string>(argv + 1, argv + argc);
+      header["config"] = app.config_to_str(true, false);
+      header["config_with_help"] = config_text;
+      checkpoint.emplace(fs::path(given.out) / "checkpoint.vrut", given.checkpoint_every, header);
+    }
+    o.convert();
+    const auto& so = o.so;
+    const auto& wt = o.wt;
+    const auto& mat = o.mat;
+    const auto& num = o.num;
+    const std::string &backend = o.backend, &out = o.out, &conversion = o.conversion, &seeds_text = o.seeds_text;
+    vrut::OutputDir dir(out, o.force);
     vrut::SpecimenSettings ss = to_settings(so);
     // Everything checkable is checked before the specimen is made.
     mat.mastic.validate();
@@ -198,7 +290,7 @@ int main(int argc, char** argv) {
     vrut::validate_poisson(mat.aggregate_nu);
     vrut::TimeShift{num.shift};
     wt.validate(ss.placement.width * 1e-3);
-    std::ofstream(dir.file("config.ini")) << app.config_to_str(true, true);
+    std::ofstream(dir.file("config.ini")) << config_text;
 
     const std::vector<std::uint64_t> seeds =
         seeds_text.empty() ? std::vector<std::uint64_t>{so.seed} : cli::parse_seed_list(seeds_text);
@@ -223,18 +315,28 @@ int main(int argc, char** argv) {
                  sp.placement.aggregates.size(), ensemble ? " in the first" : "",
                  wt.contact_length() * 1e3, wt.loading_time(), wt.loading_time() / num.shift);
 
-    vrut::KokkosSession kokkos(threads);
+    vrut::KokkosSession kokkos(o.threads);
     int used_threads = 1;
     vrut::ProgressBar bar(ensemble ? "loading " + std::to_string(specimens.size()) + " specimens" : "loading", 1000,
                           "permille");
     std::signal(SIGINT, on_stop_signal);
     std::signal(SIGTERM, on_stop_signal);
-    const std::vector<vrut::RuttingResult> runs = vrut::dispatch_backend(backend, [&](auto space) {
-      used_threads = vrut::concurrency(space);
-      return vrut::run_rutting_ensemble(
-          specimens, wt, mat, num, space, [&](double fraction, long) { bar.update(static_cast<long>(1000 * fraction)); },
-          [] { return stop_signal != 0; });
-    });
+    if (checkpoint->resuming()) std::fprintf(stderr, "resuming from %s\n", checkpoint->path().c_str());
+    std::vector<vrut::RuttingResult> runs;
+    try {
+      runs = vrut::dispatch_backend(backend, [&](auto space) {
+        used_threads = vrut::concurrency(space);
+        return vrut::run_rutting_ensemble(
+            specimens, wt, mat, num, space,
+            [&](double fraction, long) { bar.update(static_cast<long>(1000 * fraction)); },
+            [] { return stop_signal != 0; }, &*checkpoint);
+      });
+    } catch (const vrut::SimulationUnstable&) {
+      // The checkpoints before the blow-up stay, for a look at the state that led to it.
+      if (fs::exists(checkpoint->path()))
+        std::fprintf(stderr, "\nthe last checkpoint before it is kept in %s\n", checkpoint->path().c_str());
+      throw;
+    }
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
     if (!runs.front().interrupted) bar.finish();
@@ -337,7 +439,7 @@ int main(int argc, char** argv) {
     j["deformation_60min_mm"] = summary.deformation_final.mean;
     j["rut_depth_mm"] = summary.rut_depth.mean;
     j["dynamic_stability_passes_per_mm"] = summary.mean_curve.dynamic_stability;
-    j["specimen"] = specimen_summary(sp);
+    j["specimen"] = specimen_cli::specimen_summary(sp);
     j["interrupted"] = interrupted;
     j["minutes_done"] = minutes_done;
     if (ensemble) {
@@ -360,11 +462,14 @@ int main(int argc, char** argv) {
       j["ensemble"] = e;
     }
     std::ofstream(dir.file("summary.json")) << j.dump(2) << '\n';
+    // The checkpoint of a stopped run goes with its partial results; a run
+    // that ended needs none.
+    if (interrupted) fs::rename(checkpoint->path(), dir.file("checkpoint.vrut"));
     dir.commit();
     if (interrupted) {
       std::printf("partial results (%.1f of %.0f minutes, no dynamic stability) in %s\n"
-                  "this run cannot be resumed: run the same command again (with --force) for the whole test\n",
-                  minutes_done, wt.minutes, out.c_str());
+                  "go on with: vrut-rutting --resume %s\n",
+                  minutes_done, wt.minutes, out.c_str(), out.c_str());
       return 128 + static_cast<int>(stop_signal);
     }
     if (ensemble) {

@@ -320,6 +320,57 @@ class Simulation {
   int active_contacts(int specimen = -1) const { return count_contacts(false, specimen); }
   int intact_bonds(int specimen = -1) const { return count_contacts(true, specimen); }
 
+  // --- checkpoints ----------------------------------------------------------
+  // Everything that changes while the simulation runs, item by item, for a
+  // checkpoint: a.view(name, v), a.value(name, x) and a.vector(name, v) each
+  // write one item or read it back (io/checkpoint.hpp has both archives), so
+  // one list serves both ways. Read into a Simulation built the same way
+  // (disks, table, settings, walls), it goes on bit for bit as the one
+  // written would have. What the construction fixes (masses, the law table,
+  // the wall owners) is not written; the cell grid is rebuilt with the list.
+  template <class Archive>
+  void visit_state(Archive& a) {
+    pull_walls();
+    const std::size_t nwalls = walls_host_.size();
+    auto& p = particles_;
+    a.view("position", p.position);
+    a.view("velocity", p.velocity);
+    a.view("force", p.force);
+    a.view("external_force", p.external_force);
+    a.view("displacement", p.displacement);
+    a.view("rotation", p.rotation);
+    a.view("angular_velocity", p.angular_velocity);
+    a.view("moment", p.moment);
+    a.view("fixity", p.fixity);
+    a.view("contact_partner", contacts_.partner);
+    a.view("contact_count", contacts_.count);
+    a.view("contact_state", contacts_.state);
+    a.view("contact_load", contacts_.load);
+    a.view("contact_reverse", contacts_.reverse);
+    a.view("contact_reverse_count", contacts_.reverse_count);
+    a.view("position_at_build", contacts_.position_at_build);
+    a.value("contact_capacity", contacts_.capacity);
+    a.value("contact_reverse_capacity", contacts_.reverse_capacity);
+    a.value("contact_most_partners", contacts_.most_partners);
+    a.value("contact_most_reverse", contacts_.most_reverse);
+    a.value("contact_builds", contacts_.builds);
+    a.vector("walls", walls_host_);
+    a.vector("wall_control", control_host_);
+    if (walls_host_.size() != nwalls || control_host_.size() != nwalls)
+      throw std::invalid_argument("vrut::Simulation: the checkpoint has " + std::to_string(walls_host_.size()) +
+                                  " walls, this simulation " + std::to_string(nwalls));
+    a.view("wall_control_state", control_state_);
+    a.view("wall_state", wall_state_);
+    a.view("wall_load", wall_load_);
+    a.view("wall_touch", wall_touch_);
+    a.view("wall_total", wall_total_);
+    a.view("wall_impulse", wall_impulse_);
+    a.value("integrator", integrator_);
+    a.value("time", time_);
+    a.value("steps", steps_);
+    push_walls();
+  }
+
   // --- kernels (public only because device lambdas cannot be private) -----
   void contact_forces(double dt) {
     auto ps = particles_;

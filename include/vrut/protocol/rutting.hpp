@@ -160,12 +160,13 @@ void check_inside_moulds(Sim& sim, const std::vector<Specimen>& specimens, long 
     const double w = specimens[e].settings.placement.width * 1e-3, h = specimens[e].settings.placement.height * 1e-3;
     const double r = specimens[e].disks.radius * 1e-3;
     const auto [first, last] = sim.specimen_range(e);
-    for (int i = first; i < last; ++i)
-      if (!(x(i).x > -r && x(i).x < w + r && x(i).y > -r && x(i).y < 2.0 * h)) {
+    for (int i = first; i < last; ++i) {
+      const Vec2 p = x(i);
+      if (!(p.x > -r && p.x < w + r && p.y > -r && p.y < 2.0 * h)) {
         char where[160];
         std::snprintf(where, sizeof where, "disk %d of specimen %d (seed %llu) is at (%.4g, %.4g) mm, outside its %g x %g mm mould",
-                      i - first, e, static_cast<unsigned long long>(specimens[e].settings.seed), x(i).x * 1e3,
-                      x(i).y * 1e3, w * 1e3, h * 1e3);
+                      i - first, e, static_cast<unsigned long long>(specimens[e].settings.seed), p.x * 1e3,
+                      p.y * 1e3, w * 1e3, h * 1e3);
         char text[400];
         std::snprintf(text, sizeof text,
                       "vrut: the rutting run became unstable by loading step %ld: %s. The time step is %.3g of "
@@ -173,6 +174,7 @@ void check_inside_moulds(Sim& sim, const std::vector<Specimen>& specimens, long 
                       step, where, dt / sim.critical_timestep());
         throw SimulationUnstable(text, step);
       }
+    }
   }
 }
 
@@ -183,12 +185,27 @@ void check_inside_moulds(Sim& sim, const std::vector<Specimen>& specimens, long 
 // for all). progress(fraction of the loading time done, steps done). stop()
 // is asked at every sample: when it says true (Ctrl-C, say) the run ends
 // there, with the samples so far, a last snapshot, and `interrupted` set.
-template <class Space>
+//
+// Checkpoints (io/checkpoint.hpp has CheckpointFile): checkpoints->due() is
+// asked at every sample, and when it says true, or when the run is stopped,
+// checkpoints->save(visit) writes the state. When checkpoints->resuming(), the
+// run reads its state with checkpoints->load(visit) in place of settling and
+// goes on from there, with the same results as a run never stopped.
+struct NoCheckpoints {
+  bool resuming() const { return false; }
+  bool due() const { return false; }
+  template <class Visit> void save(Visit&&) {}
+  template <class Visit> void load(Visit&&) {}
+};
+
+template <class Space, class Checkpoints = NoCheckpoints>
 std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& specimens, const WheelTracking& wt,
                                                 const RuttingMaterials& mat, const RuttingNumerics& num,
                                                 const Space& space = Space(),
                                                 const std::function<void(double, long)>& progress = {},
-                                                const std::function<bool()>& stop = {}) {
+                                                const std::function<bool()>& stop = {},
+                                                Checkpoints* checkpoints = nullptr) {
+  const bool resuming = checkpoints != nullptr && checkpoints->resuming();
   if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
   if (!(num.timestep_safety > 0.0 && num.timestep_safety <= 1.0)) throw std::invalid_argument("time-step safety must lie in (0, 1]");
   if (num.samples < 10) throw std::invalid_argument("at least 10 samples");
@@ -227,8 +244,8 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   }
   const double dt = num.timestep_safety * sim.critical_timestep();
 
-  // Settling under gravity.
-  sim.run(num.settle_steps, dt);
+  // Settling under gravity (a resumed run reads where it had got to instead).
+  if (!resuming) sim.run(num.settle_steps, dt);
 
   // The plates, each on the highest disk under it; the load brings it down.
   const double l = wt.contact_length();
@@ -292,13 +309,50 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   const auto begin = std::chrono::steady_clock::now();
   int next_sample = 1, next_snapshot = 1;
   std::vector<Vec2> last_impulse(count);
-  double last_time = 0.0;
-  long done = steps;
-  for (long s = 1; s <= steps; ++s) {
+  double last_time = 0.0, seconds_before = 0.0, checkpoint_seconds = 0.0;  // wall time of the run before this process
+  long done = steps, last_done = 0;
+  // The whole state of the run between two steps, item by item (Simulation::visit_state).
+  auto visit = [&](auto& archive) {
+    sim.visit_state(archive);
+    archive.view("loading_start", start);
+    archive.value("loading_steps_done", last_done);
+    archive.value("next_sample", next_sample);
+    archive.value("next_snapshot", next_snapshot);
+    archive.value("last_sample_time", last_time);
+    archive.vector("last_plate_impulse", last_impulse);
+    archive.vector("plate_start_height", top);
+    checkpoint_seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    archive.value("wall_seconds", checkpoint_seconds);
+    for (int e = 0; e < count; ++e) {
+      const std::string id = "specimen_" + std::to_string(e) + "_";
+      archive.vector(id + "samples", results[e].samples);
+      int shots = static_cast<int>(results[e].snapshots.size());
+      archive.value(id + "snapshots", shots);
+      results[e].snapshots.resize(shots);
+      for (int k = 0; k < shots; ++k) {
+        RuttingSnapshot& shot = results[e].snapshots[k];
+        const std::string sid = id + "snapshot_" + std::to_string(k) + "_";
+        archive.value(sid + "fraction", shot.fraction);
+        archive.vector(sid + "x", shot.x);
+        archive.vector(sid + "y", shot.y);
+        archive.vector(sid + "dx", shot.dx);
+        archive.vector(sid + "dy", shot.dy);
+      }
+    }
+  };
+  if (resuming) {
+    checkpoints->load(visit);
+    seconds_before = checkpoint_seconds;
+  }
+  for (long s = last_done + 1; s <= steps; ++s) {
     if (s <= ramp_steps && (s % 50 == 1 || s == ramp_steps))
       ramp_to(std::min(1.0, static_cast<double>(s) / ramp_steps));
     sim.step(dt);
     const double time = s * dt;
+    if (next_snapshot <= 3 && (s >= steps * next_snapshot / 3)) {
+      snapshot(next_snapshot / 3.0);
+      ++next_snapshot;
+    }
     if (next_sample <= num.samples && (time >= t_load * next_sample / num.samples - 0.5 * dt || s == steps)) {
       check_inside_moulds(sim, specimens, s, dt);
       const std::vector<Wall>& walls = sim.all_walls();
@@ -317,16 +371,17 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
       last_time = time;
       ++next_sample;
       if (progress) progress(time / t_load, s);
-      if (stop && s < steps && stop()) {
+      const bool stopping = stop && s < steps && stop();
+      if (checkpoints != nullptr && s < steps && (stopping || checkpoints->due())) {
+        last_done = s;
+        checkpoints->save(visit);
+      }
+      if (stopping) {
         done = s;
         if (next_snapshot <= 3) snapshot(time / t_load);
         for (auto& r : results) r.interrupted = true;
         break;
       }
-    }
-    if (next_snapshot <= 3 && (s >= steps * next_snapshot / 3)) {
-      snapshot(next_snapshot / 3.0);
-      ++next_snapshot;
     }
   }
   Kokkos::fence();
@@ -336,7 +391,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   auto g = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().group);
   for (int e = 0; e < count; ++e) {
     RuttingResult& res = results[e];
-    res.wall_seconds = seconds;
+    res.wall_seconds = seconds_before + seconds;
     res.steps = done;
     res.contacts = sim.active_contacts(e);
     res.plate_y_final = walls[plate[e]].start.y;
@@ -351,12 +406,12 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   return results;
 }
 
-template <class Space>
+template <class Space, class Checkpoints = NoCheckpoints>
 RuttingResult run_rutting(const Specimen& sp, const WheelTracking& wt, const RuttingMaterials& mat,
                           const RuttingNumerics& num, const Space& space = Space(),
                           const std::function<void(double, long)>& progress = {},
-                          const std::function<bool()>& stop = {}) {
-  return run_rutting_ensemble(std::vector<Specimen>{sp}, wt, mat, num, space, progress, stop).front();
+                          const std::function<bool()>& stop = {}, Checkpoints* checkpoints = nullptr) {
+  return run_rutting_ensemble(std::vector<Specimen>{sp}, wt, mat, num, space, progress, stop, checkpoints).front();
 }
 
 }  // namespace vrut

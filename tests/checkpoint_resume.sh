@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# vrut-rutting's checkpoints, from outside, as a user meets them:
+#  - a run killed with SIGKILL between checkpoints, resumed with --resume,
+#    ends with the results of the run never stopped, bit for bit;
+#  - Ctrl-C leaves a valid checkpoint beside valid partial results, and
+#    resuming that gives the same results again;
+#  - a damaged checkpoint, and options given beside --resume, are refused.
+# Usage: checkpoint_resume.sh VRUT_RUTTING
+set -u
+exe=$1
+work=$(mktemp -d)
+trap 'kill -9 $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
+cd "$work" || exit 1
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# A small test (about 8 s on 2 cores): long enough that the signals come while it loads.
+small=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 3e4 --settle-steps 300)
+
+# Waits (at most 60 s) until FILE exists or holds PATTERN.
+wait_for() {  # wait_for FILE [PATTERN]
+  for _ in $(seq 300); do
+    if [[ $# -eq 1 ]]; then [[ -e $1 ]] && return 0; else grep -q "$2" "$1" 2>/dev/null && return 0; fi
+    sleep 0.2
+  done
+  return 1
+}
+# The results, less what depends on the clock or the thread count.
+same_results() {  # same_results DIR_A DIR_B
+  local f
+  for f in deformation.csv final.vtk; do
+    cmp -s "$1/$f" "$2/$f" || { fail "$f of $2 differs from that of $1"; return; }
+  done
+  diff <(grep -vE '"(wall_seconds|particle_steps_per_second|threads)"' "$1/summary.json") \
+       <(grep -vE '"(wall_seconds|particle_steps_per_second|threads)"' "$2/summary.json") >/dev/null ||
+    { fail "summary.json of $2 differs from that of $1"; return; }
+  echo "ok:   $2 ends as $1 did"
+}
+
+"$exe" "${small[@]}" --out whole >whole.out 2>&1 || fail "the uninterrupted run failed: $(tail -n 3 whole.out)"
+
+# SIGKILL between checkpoints: nothing is written on the way out, so only
+# the last checkpoint is left.
+"$exe" "${small[@]}" --checkpoint-every 1 --out killed >killed.out 2>&1 &
+pid=$!
+wait_for killed/checkpoint.vrut || fail "no checkpoint within 60 s"
+sleep 0.5
+kill -KILL "$pid"
+wait "$pid" 2>/dev/null
+[[ -s killed/checkpoint.vrut && ! -e killed/summary.json ]] || fail "after SIGKILL: $(ls killed)"
+"$exe" --resume killed >resumed.out 2>&1 || fail "--resume after SIGKILL failed: $(tail -n 3 resumed.out)"
+grep -q "resuming from" resumed.out || fail "the resumed run does not say it resumes"
+same_results whole killed
+[[ -e killed/checkpoint.vrut ]] && fail "a finished run left its checkpoint behind"
+
+# Ctrl-C: partial results and a checkpoint, and how to go on.
+"$exe" "${small[@]}" --out stopped >stopped.out 2>stopped.err &
+pid=$!
+wait_for stopped.err "loading.*[1-9]0 *%" || fail "no progress within 60 s"
+kill -INT "$pid"
+wait "$pid"; code=$?
+[[ $code -eq 130 ]] || fail "Ctrl-C gave exit $code, not 130"
+grep -q "go on with: .*--resume stopped" stopped.out || fail "Ctrl-C does not say how to resume: $(cat stopped.out)"
+grep -q '"interrupted": true' stopped/summary.json 2>/dev/null || fail "no partial summary.json"
+[[ -s stopped/checkpoint.vrut ]] || fail "Ctrl-C left no checkpoint"
+"$exe" --resume stopped --threads 1 >stopped2.out 2>&1 || fail "--resume after Ctrl-C failed: $(tail -n 3 stopped2.out)"
+same_results whole stopped
+
+# Refusals: with exit 2 and a message, and the checkpoint left as it was.
+check_refused() {  # check_refused PATTERN ARGS...
+  local pattern=$1; shift
+  local out code
+  out=$("$exe" "$@" 2>&1); code=$?
+  if [[ $code -ne 2 ]] || ! grep -qE "$pattern" <<<"$out"; then fail "$* -> exit $code: $out"; else echo "ok:   $* refused"; fi
+}
+"$exe" "${small[@]}" --checkpoint-every 1 --out again >again.out 2>&1 &
+pid=$!
+wait_for again/checkpoint.vrut || fail "no checkpoint within 60 s"
+kill -KILL "$pid"
+wait "$pid" 2>/dev/null
+check_refused "only --backend, --threads and --checkpoint-every" --resume again --seed 4
+check_refused "holds the checkpoint of an unfinished run" "${small[@]}" --out again
+check_refused "no checkpoint in" --resume whole
+cp again/checkpoint.vrut good.vrut
+printf 'x' | dd of=again/checkpoint.vrut bs=1 seek=5000 conv=notrunc status=none
+check_refused "damaged" --resume again
+cmp -s good.vrut again/checkpoint.vrut && fail "the test did not damage the checkpoint"
+
+echo "$failures failure(s)"
+exit $((failures > 0))

@@ -1,0 +1,153 @@
+// Checkpoints: a rutting run stopped and resumed from its checkpoint ends
+// exactly where the run never stopped ends; a checkpoint that is damaged, from
+// another version or of another run is refused, saying which.
+#include "spaces.hpp"
+
+#include <vrut/io/checkpoint.hpp>
+#include <vrut/protocol/rutting.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace {
+
+vrut::Specimen small_specimen(double width = 60.0) {
+  vrut::SpecimenSettings s;
+  s.placement.width = width;
+  s.placement.height = 30.0;
+  s.disk_radius = 1.0;
+  s.seed = 3;
+  return vrut::generate_specimen(s);
+}
+
+vrut::WheelTracking short_test() {
+  vrut::WheelTracking wt;
+  wt.minutes = 6.0;
+  wt.ds_from_minute = 4.0;
+  return wt;
+}
+
+vrut::RuttingNumerics short_numerics() {
+  vrut::RuttingNumerics n;
+  n.shift = 1e4;
+  n.settle_steps = 1000;
+  n.samples = 30;
+  return n;
+}
+
+std::filesystem::path scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "vrut-test-checkpoint";
+  std::filesystem::create_directories(dir);
+  return dir / name;
+}
+
+// Every number a run reports, compared bit for bit.
+void require_same(const vrut::RuttingResult& a, const vrut::RuttingResult& b) {
+  REQUIRE(a.samples.size() == b.samples.size());
+  for (std::size_t k = 0; k < a.samples.size(); ++k) {
+    REQUIRE(a.samples[k].deformation == b.samples[k].deformation);
+    REQUIRE(a.samples[k].plate_pressure == b.samples[k].plate_pressure);
+    REQUIRE(a.samples[k].minutes == b.samples[k].minutes);
+  }
+  REQUIRE(a.snapshots.size() == b.snapshots.size());
+  for (std::size_t k = 0; k < a.snapshots.size(); ++k) {
+    REQUIRE(a.snapshots[k].x == b.snapshots[k].x);
+    REQUIRE(a.snapshots[k].dy == b.snapshots[k].dy);
+  }
+  REQUIRE(a.vx == b.vx);
+  REQUIRE(a.vy == b.vy);
+  REQUIRE(a.steps == b.steps);
+  REQUIRE(a.contacts == b.contacts);
+  REQUIRE(a.plate_y_final == b.plate_y_final);
+  REQUIRE(a.dynamic_stability == b.dynamic_stability);
+}
+
+}  // namespace
+
+TEMPLATE_LIST_TEST_CASE("a run stopped with a checkpoint and resumed ends bit for bit as the run never stopped",
+                        "[checkpoint]", vrut_test::ExecutionSpaces) {
+  const vrut::Specimen sp = small_specimen();
+  const auto wt = short_test();
+  const auto num = short_numerics();
+  const auto whole = vrut::run_rutting<TestType>(sp, wt, {}, num);
+
+  const auto path = scratch("stopped.vrut");
+  vrut::CheckpointFile first(path, 0.0, {{"run", "stopped at sample 7"}});
+  int asked = 0;
+  const auto part = vrut::run_rutting<TestType>(sp, wt, {}, num, {}, {}, [&] { return ++asked == 7; }, &first);
+  REQUIRE(part.interrupted);
+  REQUIRE(first.written() == 1);
+
+  auto again = vrut::CheckpointFile::resume(path, 0.0);
+  CHECK(again.header().at("run") == "stopped at sample 7");
+  const auto resumed = vrut::run_rutting<TestType>(sp, wt, {}, num, {}, {}, {}, &again);
+  CHECK_FALSE(resumed.interrupted);
+  require_same(resumed, whole);
+  CHECK(resumed.bonds == whole.bonds);
+}
+
+TEST_CASE("checkpoints written by the clock resume, on another backend too", "[checkpoint]") {
+  const vrut::Specimen sp = small_specimen();
+  const auto wt = short_test();
+  const auto num = short_numerics();
+  using Host = Kokkos::DefaultHostExecutionSpace;
+  const auto path = scratch("clock.vrut");
+  // Due at every sample but the last, or every one where the last falls a
+  // step before the end: the file left holds the last sample before the end.
+  vrut::CheckpointFile clock(path, 1e-9, {});
+  const auto whole = vrut::run_rutting<Host>(sp, wt, {}, num, {}, {}, {}, &clock);
+  CHECK(clock.written() >= num.samples - 1);
+  CHECK(clock.written() <= num.samples);
+  CHECK_FALSE(std::filesystem::exists(path.string() + ".writing"));
+  auto again = vrut::CheckpointFile::resume(path, 0.0);
+  // Every sum runs in a fixed order, so the backends agree bit for bit.
+  const auto resumed = vrut::run_rutting<Kokkos::Serial>(sp, wt, {}, num, {}, {}, {}, &again);
+  require_same(resumed, whole);
+}
+
+TEST_CASE("a checkpoint that is damaged, from another version or of another run is refused", "[checkpoint]") {
+  const vrut::Specimen sp = small_specimen();
+  const auto wt = short_test();
+  const auto num = short_numerics();
+  using Host = Kokkos::DefaultHostExecutionSpace;
+  const auto path = scratch("good.vrut");
+  {
+    vrut::CheckpointFile file(path, 0.0, {});
+    int asked = 0;
+    vrut::run_rutting<Host>(sp, wt, {}, num, {}, {}, [&] { return ++asked == 3; }, &file);
+  }
+  std::ifstream in(path, std::ios::binary);
+  const std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto write = [](const std::filesystem::path& p, const std::string& bytes) {
+    std::ofstream(p, std::ios::binary | std::ios::trunc) << bytes;
+  };
+
+  const auto truncated = scratch("truncated.vrut");
+  write(truncated, good.substr(0, good.size() / 2));
+  CHECK_THROWS_WITH(vrut::read_checkpoint(truncated), Catch::Contains("is damaged"));
+
+  const auto flipped = scratch("flipped.vrut");
+  std::string bad = good;
+  bad[bad.size() - 100] ^= 0x10;
+  write(flipped, bad);
+  CHECK_THROWS_WITH(vrut::read_checkpoint(flipped), Catch::Contains("checksum"));
+
+  const auto other = scratch("other.txt");
+  write(other, "gradation=2\n");
+  CHECK_THROWS_WITH(vrut::read_checkpoint(other), Catch::Contains("not a vrut checkpoint"));
+  CHECK_THROWS_WITH(vrut::read_checkpoint(scratch("missing.vrut")), Catch::Contains("cannot open"));
+
+  const auto old = scratch("old.vrut");
+  const vrut::Checkpoint c = vrut::read_checkpoint(path);
+  vrut::write_checkpoint(old, c.header, c.state, "0.0.9");
+  CHECK_THROWS_WITH(vrut::read_checkpoint(old), Catch::Contains("written by vrut 0.0.9"));
+
+  // The checkpoint of a 60 mm section cannot go on as a 70 mm one.
+  auto wrong = vrut::CheckpointFile::resume(path, 0.0);
+  CHECK_THROWS_WITH(vrut::run_rutting<Host>(small_specimen(70.0), wt, {}, num, {}, {}, {}, &wrong),
+                    Catch::Contains("another run"));
+}
