@@ -2,6 +2,7 @@
 // its gradation and binder properties to the rut depth and dynamic stability.
 #include "common/cli.hpp"
 #include "common/draw.hpp"
+#include "common/ranks.hpp"
 #include "common/seeds.hpp"
 #include "common/specimen_cli.hpp"
 
@@ -243,6 +244,7 @@ RunOptions options_to_resume(const CLI::App& command_line, const RunOptions& giv
 }  // namespace
 
 int main(int argc, char** argv) {
+  ranks::Session session(argc, argv);  // mpirun -np K: K ranks share the seeds of an ensemble
   RunOptions given;
   std::string resume;
   CLI::App app("vrut-rutting: virtual wheel-tracking (rutting) test of an asphalt mixture, DEM with Burger's mastic");
@@ -251,30 +253,33 @@ int main(int argc, char** argv) {
       ->group("Runs")->configurable(false);
   if (const int code = cli::parse(app, argc, argv); code >= 0) return code;
 
-  return cli::guarded([&] {
+  const int code = cli::guarded([&] {
     namespace fs = std::filesystem;
     std::optional<vrut::CheckpointFile> checkpoint;
     RunOptions o = given;
     std::string config_text = app.config_to_str(true, true);
+    // Each rank checkpoints its own specimens, and resumes them with as many ranks.
+    const std::string checkpoint_name = ranks::checkpoint_name(session.rank(), session.size());
     if (!resume.empty()) {
-      const fs::path file = fs::path(resume) / "checkpoint.vrut";
+      const fs::path file = fs::path(resume) / checkpoint_name;
       if (!fs::exists(file))
         throw std::invalid_argument("no checkpoint in " + resume + " (" + file.string() +
-                                    "): a run writes one on Ctrl-C, or every --checkpoint-every seconds");
+                                    "): a run writes one on Ctrl-C, or every --checkpoint-every seconds" +
+                                    (session.size() > 1 ? "; resume with as many ranks as the run had" : ""));
       checkpoint = vrut::CheckpointFile::resume(file, given.checkpoint_every);
       o = options_to_resume(app, given, *checkpoint);
       checkpoint->set_interval(o.checkpoint_every);
       o.out = resume;
       config_text = checkpoint->header().at("config_with_help").get<std::string>();
     } else {
-      if (fs::exists(fs::path(given.out) / "checkpoint.vrut") && !given.force)
+      if (fs::exists(fs::path(given.out) / checkpoint_name) && !given.force)
         throw std::invalid_argument("'" + given.out + "' holds the checkpoint of an unfinished run: go on with it "
                                     "with --resume " + given.out + ", or start again with --force");
       nlohmann::json header;
       header["argv"] = std::vector<std::string>(argv + 1, argv + argc);
       header["config"] = app.config_to_str(true, false);
       header["config_with_help"] = config_text;
-      checkpoint.emplace(fs::path(given.out) / "checkpoint.vrut", given.checkpoint_every, header);
+      checkpoint.emplace(fs::path(given.out) / checkpoint_name, given.checkpoint_every, header);
     }
     o.convert();
     const auto& so = o.so;
@@ -282,7 +287,8 @@ int main(int argc, char** argv) {
     const auto& mat = o.mat;
     const auto& num = o.num;
     const std::string &backend = o.backend, &out = o.out, &conversion = o.conversion, &seeds_text = o.seeds_text;
-    vrut::OutputDir dir(out, o.force);
+    std::optional<vrut::OutputDir> output;  // rank 0 writes the results
+    if (session.root()) output.emplace(out, o.force);
     vrut::SpecimenSettings ss = to_settings(so);
     // Everything checkable is checked before the specimen is made.
     mat.mastic.validate();
@@ -290,13 +296,17 @@ int main(int argc, char** argv) {
     vrut::validate_poisson(mat.aggregate_nu);
     vrut::TimeShift{num.shift};
     wt.validate(ss.placement.width * 1e-3);
-    std::ofstream(dir.file("config.ini")) << config_text;
-
     const std::vector<std::uint64_t> seeds =
         seeds_text.empty() ? std::vector<std::uint64_t>{so.seed} : cli::parse_seed_list(seeds_text);
     const bool ensemble = !seeds_text.empty();
+    if (seeds.size() < static_cast<std::size_t>(session.size()))
+      throw std::invalid_argument(std::to_string(session.size()) + " MPI ranks for " + std::to_string(seeds.size()) +
+                                  " seed(s): give at least one seed per rank (--seeds)");
+    if (session.root()) std::ofstream(output->file("config.ini")) << config_text;
+    const auto [first_seed, last_seed] = ranks::block(seeds.size(), session.rank(), session.size());
+    const std::vector<std::uint64_t> my_seeds(seeds.begin() + first_seed, seeds.begin() + last_seed);
     std::vector<vrut::Specimen> specimens;
-    for (std::uint64_t seed : seeds) {
+    for (std::uint64_t seed : my_seeds) {
       ss.seed = seed;
       try {
         specimens.push_back(vrut::generate_specimen(ss));
@@ -304,21 +314,24 @@ int main(int argc, char** argv) {
         std::cerr << "error: seed " << seed << ": " << e.what() << '\n';
         return 1;
       }
-      if (seeds.size() > 1) std::fprintf(stderr, "\rspecimens generated: %zu of %zu", specimens.size(), seeds.size());
+      if (my_seeds.size() > 1 && session.root())
+        std::fprintf(stderr, "\rspecimens generated: %zu of %zu", specimens.size(), my_seeds.size());
     }
-    if (seeds.size() > 1) std::fprintf(stderr, "\n");
-    std::size_t disks = 0;
-    for (const auto& sp : specimens) disks += sp.disks.centers.size();
+    if (my_seeds.size() > 1 && session.root()) std::fprintf(stderr, "\n");
+    std::size_t my_disks = 0;
+    for (const auto& sp : specimens) my_disks += sp.disks.centers.size();
     const vrut::Specimen& sp = specimens.front();
-    std::fprintf(stderr, "specimen%s: gradation %s, %zu disks%s, %zu aggregates%s; plate %.2f mm, loading %.1f s (%.4g s reduced)\n",
-                 ensemble ? "s" : "", ss.gradation.name.c_str(), disks, ensemble ? " in all" : "",
-                 sp.placement.aggregates.size(), ensemble ? " in the first" : "",
-                 wt.contact_length() * 1e3, wt.loading_time(), wt.loading_time() / num.shift);
+    if (session.root())
+      std::fprintf(stderr, "specimen%s: gradation %s, %zu disks%s, %zu aggregates%s; plate %.2f mm, loading %.1f s (%.4g s reduced)\n",
+                   ensemble ? "s" : "", ss.gradation.name.c_str(), my_disks,
+                   session.size() > 1 ? (" on rank 0 of " + std::to_string(session.size())).c_str() : (ensemble ? " in all" : ""),
+                   sp.placement.aggregates.size(), ensemble ? " in the first" : "",
+                   wt.contact_length() * 1e3, wt.loading_time(), wt.loading_time() / num.shift);
 
     vrut::KokkosSession kokkos(o.threads);
     int used_threads = 1;
-    vrut::ProgressBar bar(ensemble ? "loading " + std::to_string(specimens.size()) + " specimens" : "loading", 1000,
-                          "permille");
+    vrut::ProgressBar bar(ensemble ? "loading " + std::to_string(seeds.size()) + " specimens" : "loading", 1000,
+                          "permille", session.root() ? stderr : nullptr);
     std::signal(SIGINT, on_stop_signal);
     std::signal(SIGTERM, on_stop_signal);
     if (checkpoint->resuming()) std::fprintf(stderr, "resuming from %s\n", checkpoint->path().c_str());
@@ -329,7 +342,8 @@ int main(int argc, char** argv) {
         return vrut::run_rutting_ensemble(
             specimens, wt, mat, num, space,
             [&](double fraction, long) { bar.update(static_cast<long>(1000 * fraction)); },
-            [] { return stop_signal != 0; }, &*checkpoint);
+            // Every rank stops at the same sample, so the curves stay the same length.
+            [&] { return session.any(stop_signal != 0); }, &*checkpoint);
       });
     } catch (const vrut::SimulationUnstable&) {
       // The checkpoints before the blow-up stay, for a look at the state that led to it.
@@ -339,8 +353,30 @@ int main(int argc, char** argv) {
     }
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
-    if (!runs.front().interrupted) bar.finish();
     const bool interrupted = runs.front().interrupted;
+    // Rank 0 gathers every specimen's result, in the seeds' order.
+    std::vector<ranks::SpecimenFacts> facts;
+    for (const auto& one : specimens) facts.push_back({one.placement.aggregates.size(), one.placement.achieved_fraction});
+    if (session.size() > 1) {
+      nlohmann::json mine = nlohmann::json::array();
+      for (std::size_t e = 0; e < runs.size(); ++e) mine.push_back(ranks::to_json(runs[e], facts[e]));
+      const auto parts = session.gather(nlohmann::json::to_cbor(mine));
+      if (!session.root()) return interrupted ? 128 + static_cast<int>(stop_signal) : 0;
+      std::vector<vrut::RuttingResult> all;
+      facts.clear();
+      for (const auto& part : parts)
+        for (const auto& j : nlohmann::json::from_cbor(part)) {
+          auto [r, f] = ranks::from_json(j);
+          all.push_back(std::move(r));
+          facts.push_back(f);
+        }
+      all.front() = std::move(runs.front());  // with what only rank 0 has: the snapshots and velocities, for the pictures
+      runs = std::move(all);
+    }
+    std::size_t disks = 0;
+    double wall_seconds = 0.0;
+    for (const auto& r : runs) disks += r.particles, wall_seconds = std::max(wall_seconds, r.wall_seconds);
+    if (!interrupted) bar.finish();
     const double minutes_done = runs.front().samples.empty() ? 0.0 : runs.front().samples.back().minutes;
     if (interrupted)
       std::fprintf(stderr, "\n%s at %.1f of %.0f minutes: writing the results so far\n",
@@ -350,7 +386,7 @@ int main(int argc, char** argv) {
 
     // deformation.csv and .png: one specimen's curve, or the ensemble's mean,
     // interval and every specimen's curve.
-    std::ofstream csv(dir.file("deformation.csv"));
+    std::ofstream csv(output->file("deformation.csv"));
     csv << "minutes,reduced_time_s,deformation_mm,plate_pressure_mpa";
     if (ensemble) {
       csv << ",sd_mm,ci95_low_mm,ci95_high_mm";
@@ -397,21 +433,21 @@ int main(int argc, char** argv) {
       spec.title = "Virtual wheel-tracking test, gradation " + ss.gradation.name;
       series.push_back({"rut depth under the plate", minutes, deformation});
     }
-    vrut::write_plot_png(dir.file("deformation.png").string(), spec, series);
+    vrut::write_plot_png(output->file("deformation.png").string(), spec, series);
 
     // Pictures and VTK of the first specimen.
-    draw::specimen_png(sp, dir.file("specimen.png").string());
-    rut_forming_png(sp, res, wt.minutes, dir.file("rut_forming.png").string());
-    displacement_png(sp, res, dir.file("displacement.png").string());
-    final_vtk(sp, res, dir.file("final.vtk").string());
+    draw::specimen_png(sp, output->file("specimen.png").string());
+    rut_forming_png(sp, res, wt.minutes, output->file("rut_forming.png").string());
+    displacement_png(sp, res, output->file("displacement.png").string());
+    final_vtk(sp, res, output->file("final.vtk").string());
 
     if (ensemble) {
-      std::ofstream per_seed(dir.file("seeds.csv"));
+      std::ofstream per_seed(output->file("seeds.csv"));
       per_seed << "seed,disks,aggregates,aggregate_area_fraction,rut_depth_mm,deformation_45min_mm,"
                   "deformation_60min_mm,dynamic_stability_passes_per_mm\n";
       for (std::size_t e = 0; e < runs.size(); ++e)
-        per_seed << seeds[e] << ',' << runs[e].particles << ',' << specimens[e].placement.aggregates.size() << ','
-                 << specimens[e].placement.achieved_fraction << ',' << runs[e].deformation_final * 1e3 << ','
+        per_seed << seeds[e] << ',' << runs[e].particles << ',' << facts[e].aggregates << ','
+                 << facts[e].aggregate_area_fraction << ',' << runs[e].deformation_final * 1e3 << ','
                  << runs[e].deformation_at_ds_start * 1e3 << ',' << runs[e].deformation_final * 1e3 << ','
                  << runs[e].dynamic_stability << '\n';
     }
@@ -427,10 +463,11 @@ int main(int argc, char** argv) {
     j["contacts"] = res.contacts;
     j["steps"] = res.steps;
     j["reduced_dt_s"] = res.dt;
-    j["wall_seconds"] = res.wall_seconds;
+    j["wall_seconds"] = wall_seconds;
+    j["mpi_ranks"] = session.size();
     j["backend"] = backend;
     j["threads"] = used_threads;
-    j["particle_steps_per_second"] = disks * static_cast<double>(res.steps) / res.wall_seconds;
+    j["particle_steps_per_second"] = disks * static_cast<double>(res.steps) / wall_seconds;
     j["contact_length_mm"] = wt.contact_length() * 1e3;
     j["loading_time_s"] = wt.loading_time();
     // For an ensemble: the means over the specimens (the DS: of the mean curve),
@@ -461,15 +498,20 @@ int main(int argc, char** argv) {
       e["per_seed"] = per;
       j["ensemble"] = e;
     }
-    std::ofstream(dir.file("summary.json")) << j.dump(2) << '\n';
+    std::ofstream(output->file("summary.json")) << j.dump(2) << '\n';
     // The checkpoint of a stopped run goes with its partial results; a run
     // that ended needs none.
-    if (interrupted) fs::rename(checkpoint->path(), dir.file("checkpoint.vrut"));
-    dir.commit();
+    if (interrupted)
+      for (int r = 0; r < session.size(); ++r) {
+        const std::string name = ranks::checkpoint_name(r, session.size());
+        fs::rename(fs::path(out) / name, output->file(name));
+      }
+    output->commit();
     if (interrupted) {
+      const std::string launcher = session.size() > 1 ? "mpirun -np " + std::to_string(session.size()) + " " : "";
       std::printf("partial results (%.1f of %.0f minutes, no dynamic stability) in %s\n"
-                  "go on with: vrut-rutting --resume %s\n",
-                  minutes_done, wt.minutes, out.c_str(), out.c_str());
+                  "go on with: %svrut-rutting --resume %s\n",
+                  minutes_done, wt.minutes, out.c_str(), launcher.c_str(), out.c_str());
       return 128 + static_cast<int>(stop_signal);
     }
     if (ensemble) {
@@ -479,14 +521,17 @@ int main(int argc, char** argv) {
                   "dynamic stability: mean %.0f (95 %% CI %.0f to %.0f), median %.0f, of the mean curve %.0f passes/mm "
                   "(%zu disks, %ld steps, %.0f s, %.3g particle-steps/s)\nresults in %s\n",
                   ss.gradation.name.c_str(), r.n, r.mean, wt.minutes, r.sd, r.ci_low, r.ci_high, d.mean, d.ci_low,
-                  d.ci_high, d.median, summary.mean_curve.dynamic_stability, disks, res.steps, res.wall_seconds,
+                  d.ci_high, d.median, summary.mean_curve.dynamic_stability, disks, res.steps, wall_seconds,
                   j["particle_steps_per_second"].get<double>(), out.c_str());
     } else {
       std::printf("gradation %s: rut depth %.2f mm at %.0f min, dynamic stability %.0f passes/mm "
                   "(%zu disks, %ld steps, %.0f s, %.3g particle-steps/s)\nresults in %s\n",
                   ss.gradation.name.c_str(), res.deformation_final * 1e3, wt.minutes, res.dynamic_stability, disks,
-                  res.steps, res.wall_seconds, j["particle_steps_per_second"].get<double>(), out.c_str());
+                  res.steps, wall_seconds, j["particle_steps_per_second"].get<double>(), out.c_str());
     }
     return 0;
   });
+  // A rank that failed takes the others down rather than leave them waiting.
+  if (session.size() > 1 && code != 0 && code < 128) session.abort(code);
+  return code;
 }

@@ -11,11 +11,13 @@ namespace vrut {
 
 class ProgressBar {
  public:
+  // out == nullptr: a silent bar (the other ranks of an MPI run, say).
   ProgressBar(std::string label, long total, std::string unit = "steps", std::FILE* out = stderr)
       : label_(std::move(label)), unit_(std::move(unit)), total_(total > 0 ? total : 1), out_(out),
-        tty_(isatty(fileno(out)) != 0), start_(clock::now()), last_draw_(start_) {}
+        tty_(out != nullptr && isatty(fileno(out)) != 0), start_(clock::now()), last_draw_(start_) {}
 
   void update(long done) {
+    if (out_ == nullptr) return;
     const auto now = clock::now();
     const int percent = static_cast<int>(100.0 * done / total_);
     if (tty_) {
@@ -29,6 +31,7 @@ class ProgressBar {
   }
 
   void finish() {
+    if (out_ == nullptr) return;
     const auto now = clock::now();
     draw(total_, now);
     std::fprintf(out_, tty_ ? "\n" : "");

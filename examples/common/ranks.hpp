@@ -1,0 +1,140 @@
+#pragma once
+// An ensemble shared among MPI ranks (mpirun -np K): each rank runs a block
+// of the seeds side by side, and rank 0 gathers every specimen's result to
+// write one summary. Each specimen's result does not depend on which others
+// run beside it, so K ranks give the results of one process, bit for bit.
+// Built without MPI (VRUT_WITH_MPI unset) there is one rank and nothing to share.
+#include <vrut/protocol/rutting.hpp>
+
+#include <nlohmann/json.hpp>
+
+#ifdef VRUT_WITH_MPI
+#include <mpi.h>
+#endif
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ranks {
+
+// MPI for the life of main(); one rank when vrut was built without MPI or
+// run without mpirun.
+class Session {
+ public:
+  Session(int& argc, char**& argv) {
+#ifdef VRUT_WITH_MPI
+    MPI_Init(&argc, &argv);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+#else
+    (void)argc, (void)argv;
+#endif
+  }
+  ~Session() {
+#ifdef VRUT_WITH_MPI
+    MPI_Finalize();
+#endif
+  }
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool root() const { return rank_ == 0; }
+  // A rank that fails takes the others down with it, rather than leave them
+  // waiting for its results.
+  [[noreturn]] void abort(int code) const {
+#ifdef VRUT_WITH_MPI
+    MPI_Abort(MPI_COMM_WORLD, code);
+#endif
+    std::exit(code);
+  }
+  // True on every rank when it is true on any (all must call it together).
+  bool any(bool mine) const {
+#ifdef VRUT_WITH_MPI
+    if (size_ > 1) {
+      int local = mine ? 1 : 0, global = 0;
+      MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+      return global != 0;
+    }
+#endif
+    return mine;
+  }
+  // Rank 0 gets every rank's bytes, in rank order; the others get nothing.
+  std::vector<std::vector<std::uint8_t>> gather(const std::vector<std::uint8_t>& mine) const {
+    if (size_ == 1) return {mine};
+#ifdef VRUT_WITH_MPI
+    int count = static_cast<int>(mine.size());
+    std::vector<int> counts(size_), offsets(size_);
+    MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    int total = 0;
+    for (int r = 0; r < size_; ++r) offsets[r] = total, total += counts[r];
+    std::vector<std::uint8_t> all(root() ? total : 0);
+    MPI_Gatherv(mine.data(), count, MPI_BYTE, all.data(), counts.data(), offsets.data(), MPI_BYTE, 0, MPI_COMM_WORLD);
+    std::vector<std::vector<std::uint8_t>> parts;
+    if (root())
+      for (int r = 0; r < size_; ++r) parts.emplace_back(all.begin() + offsets[r], all.begin() + offsets[r] + counts[r]);
+    return parts;
+#else
+    return {mine};
+#endif
+  }
+
+ private:
+  int rank_ = 0, size_ = 1;
+};
+
+// This rank's block of n items: [first, second). Blocks keep the seeds in
+// order, so gathering in rank order gives the seeds' order back.
+inline std::pair<std::size_t, std::size_t> block(std::size_t n, int rank, int size) {
+  const std::size_t base = n / size, extra = n % size, r = static_cast<std::size_t>(rank);
+  const std::size_t first = r * base + (r < extra ? r : extra);
+  return {first, first + base + (r < extra ? 1 : 0)};
+}
+
+// Each rank checkpoints its own specimens, and resumes them with as many ranks.
+inline std::string checkpoint_name(int rank, int size) {
+  return size == 1 ? "checkpoint.vrut"
+                   : "checkpoint-rank-" + std::to_string(rank) + "-of-" + std::to_string(size) + ".vrut";
+}
+
+// What rank 0 needs of a specimen run elsewhere: its result less the
+// per-disk fields (pictures are of the first specimen, which rank 0 runs),
+// and two facts of the specimen for seeds.csv.
+struct SpecimenFacts {
+  std::size_t aggregates = 0;
+  double aggregate_area_fraction = 0.0;
+};
+
+inline nlohmann::json to_json(const vrut::RuttingResult& r, const SpecimenFacts& f) {
+  std::vector<std::uint8_t> samples(r.samples.size() * sizeof(vrut::RuttingSample));
+  if (!samples.empty()) std::memcpy(samples.data(), r.samples.data(), samples.size());
+  return {{"samples", nlohmann::json::binary(std::move(samples))},
+          {"deformation_at_ds_start", r.deformation_at_ds_start},
+          {"deformation_final", r.deformation_final},
+          {"dynamic_stability", r.dynamic_stability},  // CBOR keeps infinity and NaN
+          {"plate", {r.plate_x0, r.plate_x1, r.plate_y_final}},
+          {"particles", r.particles}, {"contacts", r.contacts}, {"bonds", r.bonds},
+          {"interrupted", r.interrupted}, {"steps", r.steps}, {"dt", r.dt}, {"wall_seconds", r.wall_seconds},
+          {"aggregates", f.aggregates}, {"aggregate_area_fraction", f.aggregate_area_fraction}};
+}
+
+inline std::pair<vrut::RuttingResult, SpecimenFacts> from_json(const nlohmann::json& j) {
+  vrut::RuttingResult r;
+  const auto& bytes = j.at("samples").get_binary();
+  r.samples.resize(bytes.size() / sizeof(vrut::RuttingSample));
+  if (!bytes.empty()) std::memcpy(static_cast<void*>(r.samples.data()), bytes.data(), bytes.size());
+  r.deformation_at_ds_start = j.at("deformation_at_ds_start");
+  r.deformation_final = j.at("deformation_final");
+  r.dynamic_stability = j.at("dynamic_stability");
+  r.plate_x0 = j.at("plate")[0], r.plate_x1 = j.at("plate")[1], r.plate_y_final = j.at("plate")[2];
+  r.particles = j.at("particles"), r.contacts = j.at("contacts"), r.bonds = j.at("bonds");
+  r.interrupted = j.at("interrupted"), r.steps = j.at("steps"), r.dt = j.at("dt"), r.wall_seconds = j.at("wall_seconds");
+  return {r, {j.at("aggregates"), j.at("aggregate_area_fraction")}};
+}
+
+}  // namespace ranks

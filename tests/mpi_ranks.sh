@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# mpirun -np 2 vrut-rutting --seeds 1-3 shares the seeds between two ranks
+# (two on rank 0, one on rank 1) and gathers one summary: the same curves,
+# per-seed table and statistics as one process running all three.
+# Skipped (77) without mpirun or in a build without MPI.
+# Usage: mpi_ranks.sh VRUT_RUTTING
+set -u
+exe=$1
+command -v mpirun >/dev/null || { echo "skipped: no mpirun (apt-get install openmpi-bin)"; exit 77; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+# OpenMPI refuses root unless told; CI machines run as root.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+small=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300 --seeds 1-3)
+OMP_NUM_THREADS=2 "$exe" "${small[@]}" --out one >one.out 2>&1 || { echo "FAIL: one process: $(tail -n 3 one.out)"; exit 1; }
+mpirun -np 2 -x OMP_NUM_THREADS=1 -x OMP_PROC_BIND "$exe" "${small[@]}" --out two >two.out 2>&1 ||
+  { echo "FAIL: two ranks: $(tail -n 5 two.out)"; exit 1; }
+grep -q '"mpi_ranks": 2' two/summary.json || { echo "skipped: vrut-rutting was built without MPI"; exit 77; }
+failures=0
+for f in deformation.csv seeds.csv; do
+  if cmp -s "one/$f" "two/$f"; then echo "ok:   $f the same"; else echo "FAIL: $f differs"; failures=$((failures + 1)); fi
+done
+strip() { grep -vE '"(wall_seconds|particle_steps_per_second|threads|mpi_ranks)"' "$1"; }
+if diff <(strip one/summary.json) <(strip two/summary.json); then echo "ok:   summary.json the same"; else
+  echo "FAIL: summary.json differs"; failures=$((failures + 1)); fi
+exit $((failures > 0))
