@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <sstream>
 #include <iostream>
 
 namespace {
@@ -302,7 +303,7 @@ int main(int argc, char** argv) {
     if (seeds.size() < static_cast<std::size_t>(session.size()))
       throw std::invalid_argument(std::to_string(session.size()) + " MPI ranks for " + std::to_string(seeds.size()) +
                                   " seed(s): give at least one seed per rank (--seeds)");
-    if (session.root()) std::ofstream(output->file("config.ini")) << config_text;
+    if (session.root()) output->write_text("config.ini", config_text);
     const auto [first_seed, last_seed] = ranks::block(seeds.size(), session.rank(), session.size());
     const std::vector<std::uint64_t> my_seeds(seeds.begin() + first_seed, seeds.begin() + last_seed);
     std::vector<vrut::Specimen> specimens;
@@ -328,6 +329,10 @@ int main(int argc, char** argv) {
                    sp.placement.aggregates.size(), ensemble ? " in the first" : "",
                    wt.contact_length() * 1e3, wt.loading_time(), wt.loading_time() / num.shift);
 
+    // The results, and two checkpoints (the old one stays until the new one is
+    // whole) of about 1.2 kB per disk, must fit on the disk: checked now.
+    if (session.root())
+      output->require_space(4'000'000 + 200 * sp.disks.centers.size() + 2 * 1'200 * my_disks * session.size());
     vrut::KokkosSession kokkos(o.threads);
     int used_threads = 1;
     vrut::ProgressBar bar(ensemble ? "loading " + std::to_string(seeds.size()) + " specimens" : "loading", 1000,
@@ -386,7 +391,7 @@ int main(int argc, char** argv) {
 
     // deformation.csv and .png: one specimen's curve, or the ensemble's mean,
     // interval and every specimen's curve.
-    std::ofstream csv(output->file("deformation.csv"));
+    std::ostringstream csv;
     csv << "minutes,reduced_time_s,deformation_mm,plate_pressure_mpa";
     if (ensemble) {
       csv << ",sd_mm,ci95_low_mm,ci95_high_mm";
@@ -409,7 +414,7 @@ int main(int argc, char** argv) {
       low.push_back(summary.deformation_ci_low[k] * 1e3);
       high.push_back(summary.deformation_ci_high[k] * 1e3);
     }
-    csv.close();
+    output->write_text("deformation.csv", csv.str());
     vrut::PlotSpec spec;
     spec.xlabel = "test time (min)";
     spec.ylabel = "deformation (mm)";
@@ -442,7 +447,7 @@ int main(int argc, char** argv) {
     final_vtk(sp, res, output->file("final.vtk").string());
 
     if (ensemble) {
-      std::ofstream per_seed(output->file("seeds.csv"));
+      std::ostringstream per_seed;
       per_seed << "seed,disks,aggregates,aggregate_area_fraction,rut_depth_mm,deformation_45min_mm,"
                   "deformation_60min_mm,dynamic_stability_passes_per_mm\n";
       for (std::size_t e = 0; e < runs.size(); ++e)
@@ -450,6 +455,7 @@ int main(int argc, char** argv) {
                  << facts[e].aggregate_area_fraction << ',' << runs[e].deformation_final * 1e3 << ','
                  << runs[e].deformation_at_ds_start * 1e3 << ',' << runs[e].deformation_final * 1e3 << ','
                  << runs[e].dynamic_stability << '\n';
+      output->write_text("seeds.csv", per_seed.str());
     }
 
     nlohmann::json j;
@@ -498,7 +504,7 @@ int main(int argc, char** argv) {
       e["per_seed"] = per;
       j["ensemble"] = e;
     }
-    std::ofstream(output->file("summary.json")) << j.dump(2) << '\n';
+    output->write_text("summary.json", j.dump(2) + '\n');
     // The checkpoint of a stopped run goes with its partial results; a run
     // that ended needs none.
     if (interrupted)

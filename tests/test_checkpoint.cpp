@@ -31,9 +31,10 @@ vrut::WheelTracking short_test() {
   return wt;
 }
 
+// Few steps (the sanitizer build runs these too), and still a curve of 30 samples.
 vrut::RuttingNumerics short_numerics() {
   vrut::RuttingNumerics n;
-  n.shift = 1e4;
+  n.shift = 1e5;
   n.settle_steps = 1000;
   n.samples = 30;
   return n;
@@ -150,4 +151,22 @@ TEST_CASE("a checkpoint that is damaged, from another version or of another run 
   auto wrong = vrut::CheckpointFile::resume(path, 0.0);
   CHECK_THROWS_WITH(vrut::run_rutting<Host>(small_specimen(70.0), wt, {}, num, {}, {}, {}, &wrong),
                     Catch::Contains("another run"));
+}
+
+TEST_CASE("a checkpoint that cannot be written whole leaves the previous one", "[checkpoint]") {
+  if (!std::filesystem::exists("/dev/full")) {
+    WARN("no /dev/full, which stands for a full disk here: not tested");
+    return;
+  }
+  const auto path = scratch("full.vrut");
+  const nlohmann::json state = {{"item", 1}};
+  vrut::write_checkpoint(path, {{"which", "previous"}}, state);
+  // The next write goes aside to path.writing, here a disk that is full.
+  const std::filesystem::path aside = path.string() + ".writing";
+  std::filesystem::remove(aside);
+  std::filesystem::create_symlink("/dev/full", aside);
+  CHECK_THROWS_WITH(vrut::write_checkpoint(path, {{"which", "next"}}, std::string(1 << 16, 'x')),
+                    Catch::Contains("could not write the checkpoint") && Catch::Contains("previous checkpoint"));
+  CHECK(vrut::read_checkpoint(path).header.at("which") == "previous");
+  CHECK_FALSE(std::filesystem::exists(std::filesystem::symlink_status(aside)));
 }

@@ -34,7 +34,8 @@ inline void write_vtk_disks(const std::string& path, const std::string& title, c
     std::fprintf(f, "VECTORS %s double\n", name.c_str());
     for (const auto& v : values) std::fprintf(f, "%.9g %.9g 0\n", v.first, v.second);
   }
-  if (std::fclose(f) != 0) throw std::runtime_error("error writing " + path);
+  const bool failed = std::ferror(f) != 0;
+  if (std::fclose(f) != 0 || failed) throw std::runtime_error("error writing " + path + " (disk full?)");
 }
 
 }  // namespace vrut

@@ -8,6 +8,7 @@
 #include <vrut/contact/choice.hpp>
 #include <vrut/contact/composite.hpp>
 #include <vrut/core/simulation.hpp>
+#include <vrut/protocol/energy_check.hpp>
 #include <vrut/material/burgers_parameters.hpp>
 #include <vrut/specimen/specimen.hpp>
 
@@ -245,7 +246,14 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   const double dt = num.timestep_safety * sim.critical_timestep();
 
   // Settling under gravity (a resumed run reads where it had got to instead).
-  if (!resuming) sim.run(num.settle_steps, dt);
+  // The energy check (energy_check.hpp) counts the loads' work from here.
+  auto energy_reference = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  std::vector<double> plate_work(count, 0.0);
+  constexpr long energy_check_every = 500;  // settling steps
+  for (long done_settling = 0; !resuming && done_settling < num.settle_steps; done_settling += energy_check_every) {
+    sim.run(std::min(energy_check_every, num.settle_steps - done_settling), dt);
+    check_energy(sim, energy_reference, {}, sim.steps(), dt);
+  }
 
   // The plates, each on the highest disk under it; the load brings it down.
   const double l = wt.contact_length();
@@ -308,7 +316,8 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   const double to_minutes = wt.minutes / t_load;
   const auto begin = std::chrono::steady_clock::now();
   int next_sample = 1, next_snapshot = 1;
-  std::vector<Vec2> last_impulse(count);
+  std::vector<Vec2> last_impulse(count), last_plate_position(count);
+  for (int e = 0; e < count; ++e) last_plate_position[e] = sim.wall(plate[e]).start;
   double last_time = 0.0, seconds_before = 0.0, checkpoint_seconds = 0.0;  // wall time of the run before this process
   long done = steps, last_done = 0;
   // The whole state of the run between two steps, item by item (Simulation::visit_state).
@@ -321,6 +330,9 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     archive.value("last_sample_time", last_time);
     archive.vector("last_plate_impulse", last_impulse);
     archive.vector("plate_start_height", top);
+    archive.view("energy_reference", energy_reference);
+    archive.vector("plate_work", plate_work);
+    archive.vector("last_plate_position", last_plate_position);
     checkpoint_seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     archive.value("wall_seconds", checkpoint_seconds);
     for (int e = 0; e < count; ++e) {
@@ -365,9 +377,13 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
         smp.deformation = top[e] - w.start.y;
         // Mean pressure since the last sample, from the impulse on the plate.
         smp.plate_pressure = -dot(impulse[plate[e]] - last_impulse[e], inward_normal(w)) / (time - last_time) / (l * t);
+        // The plate's work on the disks: its mean force on them times its travel.
+        plate_work[e] -= dot(impulse[plate[e]] - last_impulse[e], w.start - last_plate_position[e]) / (time - last_time);
+        last_plate_position[e] = w.start;
         last_impulse[e] = impulse[plate[e]];
         results[e].samples.push_back(smp);
       }
+      check_energy(sim, energy_reference, plate_work, s, dt);
       last_time = time;
       ++next_sample;
       if (progress) progress(time / t_load, s);
