@@ -25,6 +25,8 @@ expect "1 2" "backend" -- --backend vulkan
 expect "1 2" "not expected|extra|unknown|following argument" -- --no-such-option 3
 mkdir -p "$work/taken" && touch "$work/taken/file"
 expect "1 2" "exists" -- --out taken
+# A folder that cannot be written is found before any work.
+expect "1 2" "cannot write the output folder" -- --out /dev/null/results
 
 case $which in
 demo)
