@@ -449,12 +449,14 @@ int main(int argc, char** argv) {
     if (ensemble) {
       std::ostringstream per_seed;
       per_seed << "seed,disks,aggregates,aggregate_area_fraction,rut_depth_mm,deformation_45min_mm,"
-                  "deformation_60min_mm,dynamic_stability_passes_per_mm\n";
+                  "deformation_60min_mm,dynamic_stability_passes_per_mm,dynamic_stability_is_lower_bound,"
+                  "deformation_resolution_mm\n";
       for (std::size_t e = 0; e < runs.size(); ++e)
         per_seed << seeds[e] << ',' << runs[e].particles << ',' << facts[e].aggregates << ','
                  << facts[e].aggregate_area_fraction << ',' << runs[e].deformation_final * 1e3 << ','
                  << runs[e].deformation_at_ds_start * 1e3 << ',' << runs[e].deformation_final * 1e3 << ','
-                 << runs[e].dynamic_stability << '\n';
+                 << runs[e].dynamic_stability << ',' << (runs[e].dynamic_stability_is_lower_bound ? 1 : 0) << ','
+                 << runs[e].deformation_resolution * 1e3 << '\n';
       output->write_text("seeds.csv", per_seed.str());
     }
 
@@ -482,6 +484,10 @@ int main(int argc, char** argv) {
     j["deformation_60min_mm"] = summary.deformation_final.mean;
     j["rut_depth_mm"] = summary.rut_depth.mean;
     j["dynamic_stability_passes_per_mm"] = summary.mean_curve.dynamic_stability;
+    // Where the 45-60 min deformation is below what the curve resolves, the DS
+    // is a lower bound: "above" the value given.
+    j["dynamic_stability_is_lower_bound"] = summary.mean_curve.dynamic_stability_is_lower_bound;
+    j["deformation_resolution_mm"] = summary.mean_curve.deformation_resolution * 1e3;
     j["specimen"] = specimen_cli::specimen_summary(sp);
     j["interrupted"] = interrupted;
     j["minutes_done"] = minutes_done;
@@ -494,13 +500,16 @@ int main(int argc, char** argv) {
       e["deformation_60min_mm"] = statistics_json(summary.deformation_final);
       e["dynamic_stability_passes_per_mm"] = statistics_json(summary.dynamic_stability);
       e["dynamic_stability_of_mean_curve"] = summary.mean_curve.dynamic_stability;
+      e["dynamic_stability_lower_bounds"] = summary.dynamic_stability_lower_bounds;
+      e["dynamic_stability_median_is_lower_bound"] = summary.dynamic_stability_median_is_lower_bound;
       nlohmann::json per = nlohmann::json::array();
       for (std::size_t k = 0; k < runs.size(); ++k)
         per.push_back({{"seed", seeds[k]},
                        {"disks", runs[k].particles},
                        {"rut_depth_mm", runs[k].deformation_final * 1e3},
                        {"deformation_45min_mm", runs[k].deformation_at_ds_start * 1e3},
-                       {"dynamic_stability_passes_per_mm", runs[k].dynamic_stability}});
+                       {"dynamic_stability_passes_per_mm", runs[k].dynamic_stability},
+                       {"dynamic_stability_is_lower_bound", runs[k].dynamic_stability_is_lower_bound}});
       e["per_seed"] = per;
       j["ensemble"] = e;
     }
@@ -520,20 +529,43 @@ int main(int argc, char** argv) {
                   minutes_done, wt.minutes, out.c_str(), launcher.c_str(), out.c_str());
       return 128 + static_cast<int>(stop_signal);
     }
+    // A DS that is only a lower bound reads "above N", as a laboratory writes it.
+    auto ds_text = [](double ds, bool lower_bound) {
+      char text[64];
+      std::snprintf(text, sizeof text, "%s%.0f", lower_bound ? "above " : "", ds);
+      return std::string(text);
+    };
+    const std::string speed = [&] {
+      char text[128];
+      std::snprintf(text, sizeof text, "%zu disks, %ld steps, %.0f s, %.3g particle-steps/s", disks, res.steps,
+                    wall_seconds, j["particle_steps_per_second"].get<double>());
+      return std::string(text);
+    }();
     if (ensemble) {
       const auto& r = summary.rut_depth;
       const auto& d = summary.dynamic_stability;
+      const bool any_bound = summary.dynamic_stability_lower_bounds > 0;
       std::printf("gradation %s, %d specimens: rut depth %.2f mm at %.0f min (sd %.2f, 95 %% CI %.2f to %.2f), "
-                  "dynamic stability: mean %.0f (95 %% CI %.0f to %.0f), median %.0f, of the mean curve %.0f passes/mm "
-                  "(%zu disks, %ld steps, %.0f s, %.3g particle-steps/s)\nresults in %s\n",
-                  ss.gradation.name.c_str(), r.n, r.mean, wt.minutes, r.sd, r.ci_low, r.ci_high, d.mean, d.ci_low,
-                  d.ci_high, d.median, summary.mean_curve.dynamic_stability, disks, res.steps, wall_seconds,
-                  j["particle_steps_per_second"].get<double>(), out.c_str());
+                  "dynamic stability: mean %s (95 %% CI %s), median %s, of the mean curve %s passes/mm",
+                  ss.gradation.name.c_str(), r.n, r.mean, wt.minutes, r.sd, r.ci_low, r.ci_high,
+                  ds_text(d.mean, any_bound).c_str(),
+                  any_bound ? "not known" : (ds_text(d.ci_low, false) + " to " + ds_text(d.ci_high, false)).c_str(),
+                  ds_text(d.median, summary.dynamic_stability_median_is_lower_bound).c_str(),
+                  ds_text(summary.mean_curve.dynamic_stability, summary.mean_curve.dynamic_stability_is_lower_bound).c_str());
+      if (any_bound)
+        std::printf("; %d of %d specimens deform less from minute %.0f to %.0f than their curves resolve, so their DS "
+                    "are lower bounds (seeds.csv)",
+                    summary.dynamic_stability_lower_bounds, r.n, wt.ds_from_minute, wt.minutes);
+      std::printf(" (%s)\nresults in %s\n", speed.c_str(), out.c_str());
     } else {
-      std::printf("gradation %s: rut depth %.2f mm at %.0f min, dynamic stability %.0f passes/mm "
-                  "(%zu disks, %ld steps, %.0f s, %.3g particle-steps/s)\nresults in %s\n",
-                  ss.gradation.name.c_str(), res.deformation_final * 1e3, wt.minutes, res.dynamic_stability, disks,
-                  res.steps, wall_seconds, j["particle_steps_per_second"].get<double>(), out.c_str());
+      std::printf("gradation %s: rut depth %.2f mm at %.0f min, dynamic stability %s passes/mm",
+                  ss.gradation.name.c_str(), res.deformation_final * 1e3, wt.minutes,
+                  ds_text(res.dynamic_stability, res.dynamic_stability_is_lower_bound).c_str());
+      if (res.dynamic_stability_is_lower_bound)
+        std::printf(" (from minute %.0f to %.0f the plate sank %.4f mm, less than the %.4f mm its curve resolves)",
+                    wt.ds_from_minute, wt.minutes, (res.deformation_final - res.deformation_at_ds_start) * 1e3,
+                    res.deformation_resolution * 1e3);
+      std::printf(" (%s)\nresults in %s\n", speed.c_str(), out.c_str());
     }
     return 0;
   });

@@ -52,3 +52,46 @@ TEST_CASE("the ensemble's mean curve and its DS", "[analysis][unit]") {
   CHECK(summary.deformation_sd[2] == Approx(std::sqrt(8.0) * 1e-3));
   CHECK(summary.mean_curve.samples[1].plate_pressure == Approx(0.7e6));
 }
+
+// The DS's resolution, against values worked by hand. A curve sampled every
+// minute, d(t) = b t plus a jitter of +e, -e, -e, +e repeated from minute 45:
+// that pattern sums to zero and so does its product with t over each group of
+// four, so a least-squares line through minutes 45-60 (16 samples) finds the
+// trend exactly and leaves the jitter as its residuals: s = e sqrt(16 / 14).
+// The resolution is 2 sqrt(2) s; minutes 45 and 60 both carry +e, so the
+// change between them is exactly 15 b.
+TEST_CASE("a DS whose deformation the curve cannot resolve is a lower bound", "[analysis][unit]") {
+  const double e = 0.01e-3;  // m
+  auto curve = [&](double slope_mm_per_min) {
+    vrut::RuttingResult r;
+    for (int minute = 0; minute <= 60; ++minute) {
+      vrut::RuttingSample s;
+      s.minutes = minute;
+      const int k = minute - 45;
+      const double jitter = k < 0 ? 0.0 : ((k % 4 == 0 || k % 4 == 3) ? e : -e);
+      s.deformation = slope_mm_per_min * 1e-3 * minute + jitter;
+      r.samples.push_back(s);
+    }
+    vrut::finish_deformation(r, vrut::WheelTracking{});
+    return r;
+  };
+  const double resolution = 2.0 * std::sqrt(2.0) * e * std::sqrt(16.0 / 14.0);  // m
+  // Resolved: 0.05 mm/min, 0.75 mm over the window, far above 0.034 mm.
+  const auto steep = curve(0.05);
+  CHECK(steep.deformation_resolution == Approx(resolution).epsilon(1e-9));
+  CHECK_FALSE(steep.dynamic_stability_is_lower_bound);
+  CHECK(steep.dynamic_stability == Approx(15.0 * 42.0 / 0.75).epsilon(1e-9));
+  // Not resolved: 0.001 mm/min, 0.015 mm, below it: "above 630 / 0.034 mm".
+  const auto flat = curve(0.001);
+  CHECK(flat.deformation_resolution == Approx(resolution).epsilon(1e-9));
+  CHECK(flat.dynamic_stability_is_lower_bound);
+  CHECK(flat.dynamic_stability == Approx(15.0 * 42.0 / (resolution * 1e3)).epsilon(1e-9));
+  // In an ensemble, one bound of three: the mean is a bound, the median not
+  // (the bound sorts last); two of three: the median is one too.
+  const auto two_steep = vrut::summarize_rutting({steep, flat, curve(0.04)}, vrut::WheelTracking{});
+  CHECK(two_steep.dynamic_stability_lower_bounds == 1);
+  CHECK_FALSE(two_steep.dynamic_stability_median_is_lower_bound);
+  const auto two_flat = vrut::summarize_rutting({steep, flat, curve(0.0005)}, vrut::WheelTracking{});
+  CHECK(two_flat.dynamic_stability_lower_bounds == 2);
+  CHECK(two_flat.dynamic_stability_median_is_lower_bound);
+}

@@ -117,6 +117,8 @@ inline nlohmann::json to_json(const vrut::RuttingResult& r, const SpecimenFacts&
           {"deformation_at_ds_start", r.deformation_at_ds_start},
           {"deformation_final", r.deformation_final},
           {"dynamic_stability", r.dynamic_stability},  // CBOR keeps infinity and NaN
+          {"dynamic_stability_is_lower_bound", r.dynamic_stability_is_lower_bound},
+          {"deformation_resolution", r.deformation_resolution},
           {"plate", {r.plate_x0, r.plate_x1, r.plate_y_final}},
           {"particles", r.particles}, {"contacts", r.contacts}, {"bonds", r.bonds},
           {"interrupted", r.interrupted}, {"steps", r.steps}, {"dt", r.dt}, {"wall_seconds", r.wall_seconds},
@@ -131,6 +133,8 @@ inline std::pair<vrut::RuttingResult, SpecimenFacts> from_json(const nlohmann::j
   r.deformation_at_ds_start = j.at("deformation_at_ds_start");
   r.deformation_final = j.at("deformation_final");
   r.dynamic_stability = j.at("dynamic_stability");
+  r.dynamic_stability_is_lower_bound = j.at("dynamic_stability_is_lower_bound");
+  r.deformation_resolution = j.at("deformation_resolution");
   r.plate_x0 = j.at("plate")[0], r.plate_x1 = j.at("plate")[1], r.plate_y_final = j.at("plate")[2];
   r.particles = j.at("particles"), r.contacts = j.at("contacts"), r.bonds = j.at("bonds");
   r.interrupted = j.at("interrupted"), r.steps = j.at("steps"), r.dt = j.at("dt"), r.wall_seconds = j.at("wall_seconds");

@@ -6,7 +6,9 @@
 #include <vrut/analysis/statistics.hpp>
 #include <vrut/protocol/rutting.hpp>
 
+#include <algorithm>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace vrut {
@@ -16,6 +18,11 @@ struct RuttingEnsembleSummary {
   RuttingResult mean_curve;  // samples: mean deformation and pressure; its DS from that curve
   std::vector<double> deformation_sd;  // m, standard deviation at each sample (0 for one specimen)
   std::vector<double> deformation_ci_low, deformation_ci_high;  // m, of the mean at each sample
+  // Specimens whose DS is only a lower bound (RuttingResult). With any, the
+  // mean and its interval are lower bounds too; the median is one where the
+  // bounds reach the middle of the sorted values.
+  int dynamic_stability_lower_bounds = 0;
+  bool dynamic_stability_median_is_lower_bound = false;
 };
 
 inline RuttingEnsembleSummary summarize_rutting(const std::vector<RuttingResult>& runs, const WheelTracking& wt,
@@ -36,6 +43,15 @@ inline RuttingEnsembleSummary summarize_rutting(const std::vector<RuttingResult>
   out.deformation_at_ds_start = describe(d45, confidence);
   out.deformation_final = describe(d60, confidence);
   out.dynamic_stability = describe(ds, confidence);
+  std::vector<std::pair<double, bool>> sorted;
+  for (const auto& r : runs) {
+    sorted.emplace_back(r.dynamic_stability, r.dynamic_stability_is_lower_bound);
+    out.dynamic_stability_lower_bounds += r.dynamic_stability_is_lower_bound ? 1 : 0;
+  }
+  std::sort(sorted.begin(), sorted.end());
+  const std::size_t n = sorted.size();
+  out.dynamic_stability_median_is_lower_bound =
+      sorted[n / 2].second || (n % 2 == 0 && sorted[n / 2 - 1].second);
   out.mean_curve.samples = runs.front().samples;
   out.mean_curve.interrupted = runs.front().interrupted;
   for (std::size_t k = 0; k < samples; ++k) {

@@ -103,6 +103,12 @@ struct RuttingResult {
   std::vector<int> group;
   double deformation_at_ds_start = 0.0, deformation_final = 0.0;  // m
   double dynamic_stability = 0.0;          // passes / mm
+  // The smallest deformation change over the DS window that the curve
+  // resolves (m; finish_deformation). Where the change is below it, the DS
+  // is reported as a lower bound, as a laboratory reports a DS past its
+  // gauge: dynamic_stability is then the DS that change would give.
+  double deformation_resolution = 0.0;
+  bool dynamic_stability_is_lower_bound = false;
   double plate_x0 = 0.0, plate_x1 = 0.0, plate_y_final = 0.0;     // m
   std::size_t particles = 0;
   int contacts = 0, bonds = 0;
@@ -125,7 +131,17 @@ inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, doub
   return table;
 }
 
-// Deformation at the DS start minute (interpolated), at the end, and the DS.
+// Deformation at the DS start minute (interpolated), at the end, and the DS
+// (method.md section 1: the passes between the DS start and the end over the
+// deformation between them).
+//
+// The resolution: the plate jitters about the curve's trend (its dead load
+// and the disks under it vibrate a little). The DS is a difference of two
+// points of the curve, each off the trend by about s, the residual standard
+// deviation of a least-squares line through the samples in the DS window; so
+// a change below 2 sqrt(2) s (two standard deviations of a difference) is
+// not resolved, and the DS is reported as above the value such a change
+// gives. Fewer than three samples in the window: no resolution is known (0).
 inline void finish_deformation(RuttingResult& res, const WheelTracking& wt) {
   auto deformation_at = [&](double minute) {
     for (std::size_t k = 1; k < res.samples.size(); ++k)
@@ -136,6 +152,8 @@ inline void finish_deformation(RuttingResult& res, const WheelTracking& wt) {
       }
     return res.samples.back().deformation;
   };
+  res.dynamic_stability_is_lower_bound = false;
+  res.deformation_resolution = 0.0;
   if (res.samples.empty()) {
     res.deformation_at_ds_start = res.deformation_final = 0.0;
     res.dynamic_stability = std::numeric_limits<double>::quiet_NaN();
@@ -143,11 +161,40 @@ inline void finish_deformation(RuttingResult& res, const WheelTracking& wt) {
   }
   res.deformation_at_ds_start = deformation_at(wt.ds_from_minute);
   res.deformation_final = res.samples.back().deformation;
-  const double dd_mm = (res.deformation_final - res.deformation_at_ds_start) * 1e3;
-  res.dynamic_stability = dd_mm > 0.0 ? (wt.minutes - wt.ds_from_minute) * wt.passes_per_minute / dd_mm
-                                       : std::numeric_limits<double>::infinity();
   // A run stopped before the end of the test has no DS.
-  if (res.interrupted) res.dynamic_stability = std::numeric_limits<double>::quiet_NaN();
+  if (res.interrupted) {
+    res.dynamic_stability = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  double n = 0.0, st = 0.0, sd = 0.0;
+  for (const auto& smp : res.samples)
+    if (smp.minutes >= wt.ds_from_minute * (1.0 - 1e-9)) n += 1.0, st += smp.minutes, sd += smp.deformation;
+  if (n >= 3.0) {
+    const double t_mean = st / n, d_mean = sd / n;
+    double stt = 0.0, std_ = 0.0;
+    for (const auto& smp : res.samples)
+      if (smp.minutes >= wt.ds_from_minute * (1.0 - 1e-9)) {
+        stt += (smp.minutes - t_mean) * (smp.minutes - t_mean);
+        std_ += (smp.minutes - t_mean) * (smp.deformation - d_mean);
+      }
+    const double slope = stt > 0.0 ? std_ / stt : 0.0;
+    double residuals = 0.0;
+    for (const auto& smp : res.samples)
+      if (smp.minutes >= wt.ds_from_minute * (1.0 - 1e-9)) {
+        const double r = smp.deformation - (d_mean + slope * (smp.minutes - t_mean));
+        residuals += r * r;
+      }
+    res.deformation_resolution = 2.0 * std::sqrt(2.0) * std::sqrt(residuals / (n - 2.0));
+  }
+  const double passes = (wt.minutes - wt.ds_from_minute) * wt.passes_per_minute;
+  const double dd_mm = (res.deformation_final - res.deformation_at_ds_start) * 1e3;
+  const double resolution_mm = res.deformation_resolution * 1e3;
+  if (resolution_mm > 0.0 && dd_mm < resolution_mm) {
+    res.dynamic_stability_is_lower_bound = true;
+    res.dynamic_stability = passes / resolution_mm;
+  } else {
+    res.dynamic_stability = dd_mm > 0.0 ? passes / dd_mm : std::numeric_limits<double>::infinity();
+  }
 }
 
 // Throws SimulationUnstable when a disk has left its mould (through a wall or
