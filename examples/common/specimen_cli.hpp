@@ -20,6 +20,7 @@ struct SpecimenOptions {
   double angle_fluctuation = vrut::ShapeParameters{}.angle_fluctuation;
   double asphalt_content = 0.048, gsb = 2.70, gmb = 2.40;
   double disk_radius_mm = 0.5, air_voids = 0.04;
+  std::string placement = "scan";
 };
 
 inline void add_specimen_options(CLI::App& app, SpecimenOptions& o) {
@@ -40,6 +41,9 @@ inline void add_specimen_options(CLI::App& app, SpecimenOptions& o) {
       ->capture_default_str();
   app.add_option("--air-voids", o.air_voids, "air void fraction of the section, [0, 0.3]")
       ->check(CLI::Range(0.0, 0.3))->capture_default_str();
+  app.add_option("--placement", o.placement,
+                 "where random tries jam: scan (systematic, the default) or jiggle (Monte Carlo moves; random)")
+      ->check(CLI::IsMember({"scan", "jiggle"}))->capture_default_str();
 }
 
 inline vrut::SpecimenSettings to_settings(const SpecimenOptions& o) {
@@ -55,6 +59,7 @@ inline vrut::SpecimenSettings to_settings(const SpecimenOptions& o) {
   s.mix.mix_specific_gravity = o.gmb;
   s.disk_radius = o.disk_radius_mm;
   s.air_voids = o.air_voids;
+  s.placement.method = o.placement == "jiggle" ? vrut::PlacementMethod::jiggle : vrut::PlacementMethod::scan;
   return s;
 }
 
@@ -67,6 +72,7 @@ inline nlohmann::json specimen_summary(const vrut::Specimen& sp) {
   for (const auto& [sieve, passing] : sp.stereology.quantity_gradation())
     q.push_back({{"sieve_mm", sieve}, {"percent_passing", passing}});
   j["quantity_gradation"] = q;
+  j["pieces_jammed"] = sp.placement.jammed;  // found no room in random tries: scanned or jiggled
   j["aggregate_area_fraction"] = {{"target", sp.placement.target_fraction},
                                   {"achieved", sp.placement.achieved_fraction},
                                   {"coarse_volume_fraction", sp.stereology.coarse_volume_fraction}};

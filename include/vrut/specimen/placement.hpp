@@ -8,9 +8,16 @@
 // would overshoot by more than the tolerance is redrawn). They are then
 // placed largest first, each at random positions and rotations until it
 // overlaps nothing and lies inside the section. A piece that finds no room in
-// `attempts` random tries gets a systematic scan of positions and rotations
-// (the random tries jam first in the dense mixes); a piece that finds none
-// there either stops the generation with a message saying what was reached.
+// `attempts` random tries (the random tries jam first in the dense mixes)
+// then gets, by PlacementSettings::method:
+//   scan    a systematic scan of positions and rotations, from a random
+//           origin (the method's first version; not random);
+//   jiggle  rounds of Monte Carlo moves of the pieces already placed (each
+//           moved and turned a little at random, kept only where it fits),
+//           which open room without preferring any place, each round
+//           followed by more random tries: random throughout.
+// A piece that finds no room either way stops the generation with a message
+// saying what was reached.
 #include <vrut/specimen/polygon.hpp>
 #include <vrut/specimen/stereology.hpp>
 
@@ -31,16 +38,21 @@ struct Aggregate {
   double area = 0.0;
 };
 
+enum class PlacementMethod { scan, jiggle };
+
 struct PlacementSettings {
   double width = 300.0, height = 50.0;  // mm
   ShapeParameters shape;
-  int attempts = 3000;                  // random tries per aggregate before the scan
+  int attempts = 3000;                  // random tries per aggregate before the scan or the jiggling
   double tolerance = 0.002;             // area-fraction tolerance of the drawn set
+  PlacementMethod method = PlacementMethod::scan;
+  int jiggle_rounds = 400;              // at most, per piece that finds no room
 };
 
 struct Placement {
   std::vector<Aggregate> aggregates;
   double target_fraction = 0.0, achieved_fraction = 0.0;
+  int jammed = 0;  // pieces that found no room in their random tries (then scanned or jiggled)
 };
 
 namespace detail {
@@ -68,6 +80,13 @@ class AggregateGrid {
     for (int iy = clampy(box.min().y()); iy <= clampy(box.max().y()); ++iy)
       for (int ix = clampx(box.min().x()); ix <= clampx(box.max().x()); ++ix)
         cells_[static_cast<std::size_t>(iy) * nx_ + ix].push_back(id);
+  }
+  void remove(int id, const Eigen::AlignedBox2d& box) {
+    for (int iy = clampy(box.min().y()); iy <= clampy(box.max().y()); ++iy)
+      for (int ix = clampx(box.min().x()); ix <= clampx(box.max().x()); ++ix) {
+        auto& cell = cells_[static_cast<std::size_t>(iy) * nx_ + ix];
+        cell.erase(std::remove(cell.begin(), cell.end(), id), cell.end());
+      }
   }
 
  private:
@@ -131,28 +150,67 @@ Placement place_aggregates(const Stereology& st, const PlacementSettings& ps, Rn
   detail::AggregateGrid grid(ps.width, ps.height, 4.0);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   double placed_area = 0.0;
-  auto fits = [&](const Polygon& candidate, const Eigen::AlignedBox2d& box) {
+  // skip: a placed piece that is being moved, which must not meet itself.
+  auto fits = [&](const Polygon& candidate, const Eigen::AlignedBox2d& box, int skip = -1) {
     if (box.min().x() < 0.0 || box.min().y() < 0.0 || box.max().x() > ps.width || box.max().y() > ps.height)
       return false;
     return !grid.any_in_box(box, [&](int id) {
-      return detail::bounds(out.aggregates[id].polygon).intersects(box) && polygons_overlap(out.aggregates[id].polygon, candidate);
+      return id != skip && detail::bounds(out.aggregates[id].polygon).intersects(box) &&
+             polygons_overlap(out.aggregates[id].polygon, candidate);
     });
   };
-  for (std::size_t k = 0; k < todo.size(); ++k) {
-    Aggregate a = todo[k];
-    bool placed = false;
-    for (int t = 0; t < ps.attempts && !placed; ++t) {
+  auto random_tries = [&](Aggregate& a, int tries) {
+    for (int t = 0; t < tries; ++t) {
       Polygon c = detail::rotated(a.polygon, 2.0 * M_PI * u(rng));
       const Eigen::AlignedBox2d local = detail::bounds(c);
       const Point lo(-local.min().x(), -local.min().y());
       const Point span(ps.width - local.sizes().x(), ps.height - local.sizes().y());
-      if (span.x() < 0.0 || span.y() < 0.0) break;
+      if (span.x() < 0.0 || span.y() < 0.0) return false;
       c.translate(lo + Point(u(rng) * span.x(), u(rng) * span.y()));
-      if (fits(c, detail::bounds(c))) a.polygon = std::move(c), placed = true;
+      if (fits(c, detail::bounds(c))) {
+        a.polygon = std::move(c);
+        return true;
+      }
+    }
+    return false;
+  };
+  // One Monte Carlo sweep: every placed piece, in random order, moved by up
+  // to `reach` of its diameter and turned by up to `reach` radians, kept
+  // where it fits. Returns the fraction of moves kept.
+  auto jiggle = [&](double reach) {
+    std::vector<int> order(out.aggregates.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    std::shuffle(order.begin(), order.end(), rng);
+    int kept = 0;
+    for (int id : order) {
+      Aggregate& b = out.aggregates[id];
+      const Point c = b.polygon.centroid_of_vertices();
+      Polygon moved = b.polygon;
+      moved.translate(-c);
+      moved = detail::rotated(moved, reach * (2.0 * u(rng) - 1.0));
+      moved.translate(c + reach * b.diameter * Point(2.0 * u(rng) - 1.0, 2.0 * u(rng) - 1.0));
+      const Eigen::AlignedBox2d box = detail::bounds(moved);
+      if (!fits(moved, box, id)) continue;
+      grid.remove(id, detail::bounds(b.polygon));
+      grid.insert(id, box);
+      b.polygon = std::move(moved);
+      ++kept;
+    }
+    return order.empty() ? 0.0 : static_cast<double>(kept) / order.size();
+  };
+  double reach = 0.05;  // adapted so that about a third of the moves are kept
+  for (std::size_t k = 0; k < todo.size(); ++k) {
+    Aggregate a = todo[k];
+    bool placed = random_tries(a, ps.attempts);
+    out.jammed += placed ? 0 : 1;
+    for (int round = 0; ps.method == PlacementMethod::jiggle && round < ps.jiggle_rounds && !placed; ++round) {
+      const double kept = jiggle(reach);
+      reach = std::clamp(reach * (kept > 0.35 ? 1.25 : 0.8), 1e-3, 0.5);
+      placed = random_tries(a, std::max(50, ps.attempts / 10));
     }
     // Systematic scan: 12 rotations, positions on a grid of a quarter diameter, from a random origin.
     const double step = std::max(0.25, 0.25 * a.diameter);
-    for (int rot = 0; rot < 12 && !placed; ++rot) {
+    for (int rot = 0; ps.method == PlacementMethod::scan && rot < 12 && !placed; ++rot) {
       Polygon base = detail::rotated(a.polygon, M_PI * rot / 6.0 + u(rng));
       const Eigen::AlignedBox2d local = detail::bounds(base);
       base.translate(Point(-local.min().x(), -local.min().y()));
