@@ -31,6 +31,11 @@ struct BurgersElement {
   double maxwell_viscosity = 0.0;  // C_m, N s/m
   double kelvin_stiffness = 0.0;   // K_k, N/m
   double kelvin_viscosity = 0.0;   // C_k, N s/m
+  // The update's coefficients for one time step (burgers_prepare): they
+  // depend on the parameters and dt only, and working them out per contact
+  // and step cost five divisions each time. prepared_dt = 0: not prepared.
+  double prepared_dt = 0.0;
+  double a = 0.0, b = 0.0, c = 0.0, d = 0.0, kelvin_release = 0.0 /* 1 - b/a */, half_dt_kelvin = 0.0;
 };
 
 struct BurgersHistory {
@@ -38,16 +43,26 @@ struct BurgersHistory {
   double kelvin = 0.0;  // u_k
 };
 
+// The coefficients of burgers_step for time step dt, the same operations in
+// the same order, so a prepared element gives the same bits as one that is not.
+KOKKOS_INLINE_FUNCTION void burgers_prepare(BurgersElement& e, double dt) {
+  e.a = 1.0 + e.kelvin_stiffness * dt / (2.0 * e.kelvin_viscosity);
+  e.b = 1.0 - e.kelvin_stiffness * dt / (2.0 * e.kelvin_viscosity);
+  const double common = dt / (2.0 * e.kelvin_viscosity * e.a) + dt / (2.0 * e.maxwell_viscosity);
+  e.c = common - 1.0 / e.maxwell_stiffness;
+  e.d = common + 1.0 / e.maxwell_stiffness;
+  e.kelvin_release = 1.0 - e.b / e.a;
+  e.half_dt_kelvin = dt / (2.0 * e.kelvin_viscosity);
+  e.prepared_dt = dt;
+}
+
 // One trapezoidal step of a Burger's element: displacement increment du
 // (positive loads it), returns the new force.
 KOKKOS_INLINE_FUNCTION double burgers_step(const BurgersElement& e, BurgersHistory& h, double du, double dt) {
-  const double a = 1.0 + e.kelvin_stiffness * dt / (2.0 * e.kelvin_viscosity);
-  const double b = 1.0 - e.kelvin_stiffness * dt / (2.0 * e.kelvin_viscosity);
-  const double common = dt / (2.0 * e.kelvin_viscosity * a) + dt / (2.0 * e.maxwell_viscosity);
-  const double c = common - 1.0 / e.maxwell_stiffness;
-  const double d = common + 1.0 / e.maxwell_stiffness;
-  const double f = (du + (1.0 - b / a) * h.kelvin - c * h.force) / d;
-  h.kelvin = (b * h.kelvin + dt / (2.0 * e.kelvin_viscosity) * (f + h.force)) / a;
+  BurgersElement k = e;
+  if (e.prepared_dt != dt) burgers_prepare(k, dt);
+  const double f = (du + k.kelvin_release * h.kelvin - k.c * h.force) / k.d;
+  h.kelvin = (k.b * h.kelvin + k.half_dt_kelvin * (f + h.force)) / k.a;
   h.force = f;
   return f;
 }
@@ -59,6 +74,7 @@ struct BurgersNormal {
   KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const ContactGeometry& g) {
     return burgers_step(p, s, g.normal_increment, g.dt);
   }
+  static void prepare(params_type& p, double dt) { burgers_prepare(p, dt); }
   // Without a bond a contact cannot pull: the stored force restarts from zero.
   KOKKOS_INLINE_FUNCTION static void cut_tension(const params_type&, state_type& s) {
     if (s.force < 0.0) s.force = 0.0;
@@ -74,6 +90,7 @@ struct BurgersShear {
   KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const ContactGeometry& g) {
     return burgers_step(p, s, -g.shear_increment, g.dt);
   }
+  static void prepare(params_type& p, double dt) { burgers_prepare(p, dt); }
   // Coulomb cap: the stored force slides back to the limit; the Kelvin
   // element keeps its displacement.
   KOKKOS_INLINE_FUNCTION static double limit(const params_type&, state_type& s, double max_abs) {

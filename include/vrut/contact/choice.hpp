@@ -49,6 +49,10 @@ struct Choice {
     if (!is_bonded<First>(s.first)) s.second = typename Second::state_type{};
     return f;
   }
+  static void prepare(params_type& p, double dt) {
+    prepare_law<First>(p.first, dt);
+    prepare_law<Second>(p.second, dt);
+  }
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) {
     return p.use_second ? Second::stiffness(p.second) : First::stiffness(p.first);
   }

@@ -16,6 +16,7 @@
 // to friction * normal force.
 #include <vrut/contact/bond.hpp>
 #include <vrut/contact/burgers.hpp>
+#include <vrut/contact/concept.hpp>
 #include <vrut/contact/geometry.hpp>
 #include <vrut/contact/linear.hpp>
 
@@ -66,6 +67,10 @@ struct Composite {
     return {fn, fs};
   }
 
+  static void prepare(params_type& p, double dt) {
+    prepare_law<Normal>(p.normal, dt);
+    prepare_law<Shear>(p.shear, dt);
+  }
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) {
     const double kn = Normal::stiffness(p.normal), ks = Shear::stiffness(p.shear);
     return kn > ks ? kn : ks;

@@ -10,8 +10,12 @@
 //   };
 //
 // Optional: `static bool bonded(const state_type&)` (a bonded contact is kept,
-// and evaluated, while its disks are apart) and `static void bond(state_type&)`
-// (called for every touching pair by Simulation::bond_touching_contacts).
+// and evaluated, while its disks are apart), `static void bond(state_type&)`
+// (called for every touching pair by Simulation::bond_touching_contacts), and
+// `static void prepare(params_type&, double dt)` (called on the host for every
+// material pair whenever the time step changes, so that a law can work out
+// once what depends only on its parameters and dt; force() must give the same
+// result with or without it).
 #include <vrut/contact/geometry.hpp>
 
 #include <type_traits>
@@ -47,6 +51,11 @@ struct has_bonded<L, std::void_t<decltype(L::bonded(std::declval<const typename 
 template <class, class = void> struct has_bond : std::false_type {};
 template <class L>
 struct has_bond<L, std::void_t<decltype(L::bond(std::declval<typename L::state_type&>()))>> : std::true_type {};
+
+template <class, class = void> struct has_prepare : std::false_type {};
+template <class L>
+struct has_prepare<L, std::void_t<decltype(L::prepare(std::declval<typename L::params_type&>(), 0.0))>>
+    : std::true_type {};
 
 template <class L, bool = has_params_type<L>::value && has_state_type<L>::value>
 struct law_members_ok : std::false_type {};
@@ -91,6 +100,12 @@ template <class Law>
 KOKKOS_INLINE_FUNCTION void make_bonded(typename Law::state_type& s) {
   if constexpr (detail::has_bond<Law>::value) Law::bond(s);
   else (void)s;
+}
+// Host-side: a law's per-time-step preparation, where it has one.
+template <class Law>
+void prepare_law(typename Law::params_type& p, double dt) {
+  if constexpr (detail::has_prepare<Law>::value) Law::prepare(p, dt);
+  else (void)p, (void)dt;
 }
 
 }  // namespace vrut

@@ -250,6 +250,7 @@ class Simulation {
     const double moved = contacts_.builds == 0 ? 0.0 : contacts_.max_displacement(space_, particles_);
     if (!(moved <= 0.5 * settings_.skin + largest_diameter_)) report_instability(dt);
     if (contacts_.builds == 0 || moved > 0.5 * settings_.skin) contacts_.rebuild(space_, particles_, settings_.skin);
+    if (dt != prepared_dt_) prepare_laws(dt);
     contact_forces(dt);
     sum_and_advance(dt);
     move_walls(dt);
@@ -274,6 +275,16 @@ class Simulation {
                   "step %.4g s is %.3g of sqrt(m_min / k_max) = %.4g s; dense packings need 0.1 to 0.3 of it.",
                   steps_, time_, bad, s(bad), x(bad).x, x(bad).y, count - 1, dt, dt / critical, critical);
     throw SimulationUnstable(text, steps_);
+  }
+
+  // Lets the law work out, once per time step size, what depends only on its
+  // parameters and dt (contact/concept.hpp, prepare); the results are the same.
+  void prepare_laws(double dt) {
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), law_params_);
+    for (std::size_t a = 0; a < h.extent(0); ++a)
+      for (std::size_t b = 0; b < h.extent(1); ++b) prepare_law<Law>(h(a, b), dt);
+    Kokkos::deep_copy(law_params_, h);
+    prepared_dt_ = dt;
   }
 
   // Forces a contact-list rebuild now (it happens by itself when disks have
@@ -657,7 +668,7 @@ class Simulation {
   Kokkos::View<WallLoad*, memory_space> wall_total_;
   Kokkos::View<Vec2*, memory_space> wall_impulse_;
 
-  double time_ = 0.0;
+  double time_ = 0.0, prepared_dt_ = 0.0;
   long steps_ = 0;
 };
 
