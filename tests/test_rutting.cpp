@@ -110,6 +110,18 @@ TEST_CASE("Serial and OpenMP give the same rutting deformation", "[rutting][back
 }
 #endif
 
+TEST_CASE("friction is set per interaction: stone on stone apart from contacts through mastic", "[rutting][unit]") {
+  vrut::RuttingMaterials m;
+  m.friction = 0.5;
+  const auto same = vrut::rutting_table(m, 0.05, 1e4);  // stone_friction < 0: the one friction everywhere
+  CHECK(same(vrut::aggregate_group, vrut::aggregate_group).second.friction == 0.5);
+  m.stone_friction = 1.2;
+  const auto apart = vrut::rutting_table(m, 0.05, 1e4);
+  CHECK(apart(vrut::aggregate_group, vrut::aggregate_group).second.friction == 1.2);
+  CHECK(apart(vrut::mastic_group, vrut::mastic_group).first.friction == 0.5);
+  CHECK(apart(vrut::mastic_group, vrut::aggregate_group).first.friction == 0.5);
+}
+
 TEST_CASE("the loading follows SPEC section 1", "[rutting][unit]") {
   const vrut::WheelTracking wt;
   CHECK(wt.contact_length() * 1e3 == Approx(21.86).epsilon(1e-3));

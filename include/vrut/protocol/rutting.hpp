@@ -71,6 +71,10 @@ struct RuttingMaterials {
   double aggregate_nu = 0.25;
   double mastic_density = 2400.0, aggregate_density = 2700.0;  // kg/m^3
   double friction = 1.0;                // disk-disk, where no bond holds (calibrated, crushed stone)
+  // Aggregate on aggregate only, where no bond holds; < 0: `friction`. A
+  // candidate of the gradation study: stone on stone against contacts
+  // through mastic (docs/validation.md).
+  double stone_friction = -1.0;
   double wall_friction = 0.0;           // mould walls and plate
 };
 
@@ -127,7 +131,8 @@ inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, doub
   table.set(mastic_group, aggregate_group,
             RuttingLaw::make_first(mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction)));
   table.set(aggregate_group, aggregate_group,
-            RuttingLaw::make_second(aggregate_params(m.aggregate_modulus, thickness, m.aggregate_nu, m.friction)));
+            RuttingLaw::make_second(aggregate_params(m.aggregate_modulus, thickness, m.aggregate_nu,
+                                                     m.stone_friction < 0.0 ? m.friction : m.stone_friction)));
   return table;
 }
 
