@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <random>
 
 namespace {
@@ -282,4 +283,55 @@ TEST_CASE("the jiggling placement fills the section evenly, for every mix", "[sp
       }
     }
   }
+}
+
+namespace {
+
+// Pairs of touching lattice neighbours (centres 2r apart) whose disks lie in
+// two different aggregates: stone on stone at the start. Found from the
+// disks alone, on a grid of cells one diameter wide.
+int stone_on_stone_pairs(const vrut::Specimen& sp) {
+  const auto& c = sp.disks.centers;
+  const double d = 2.0 * sp.disks.radius, reach = d * (1.0 + 1e-6);
+  std::map<std::pair<int, int>, std::vector<int>> cells;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    cells[{static_cast<int>(c[i].x() / d), static_cast<int>(c[i].y() / d)}].push_back(static_cast<int>(i));
+  int pairs = 0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const int ai = sp.disks.aggregate[i];
+    if (ai < 0) continue;
+    const int cx = static_cast<int>(c[i].x() / d), cy = static_cast<int>(c[i].y() / d);
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy) {
+        const auto it = cells.find({cx + dx, cy + dy});
+        if (it == cells.end()) continue;
+        for (int j : it->second) {
+          const int aj = sp.disks.aggregate[j];
+          if (j > static_cast<int>(i) && aj >= 0 && aj != ai && (c[j] - c[i]).norm() < reach) ++pairs;
+        }
+      }
+  }
+  return pairs;
+}
+
+}  // namespace
+
+// A binder film at placement: with a least gap between aggregates wider than
+// a disk's diameter, no disk of one stone can touch a disk of another, so
+// every stone starts coated in mastic. Without it, stones do touch.
+TEST_CASE("a binder film keeps the stones apart at the start", "[specimen][placement]") {
+  vrut::SpecimenSettings s;
+  s.gradation = vrut::builtin_gradation(2);
+  s.placement.width = 100.0;
+  s.placement.method = vrut::PlacementMethod::jiggle;
+  s.disk_radius = 0.25;
+  s.seed = 2;
+  const int bare = stone_on_stone_pairs(vrut::generate_specimen(s));
+  s.placement.binder_film = 0.55;  // mm, more than the 0.5 mm diameter
+  const vrut::Specimen coated = vrut::generate_specimen(s);
+  INFO("stone-on-stone neighbour pairs without a film: " << bare);
+  CHECK(bare > 0);
+  CHECK(stone_on_stone_pairs(coated) == 0);
+  s.placement.binder_film = -1.0;
+  CHECK_THROWS_WITH(vrut::generate_specimen(s), Catch::Contains("binder film"));
 }

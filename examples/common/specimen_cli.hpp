@@ -21,6 +21,7 @@ struct SpecimenOptions {
   double asphalt_content = 0.048, gsb = 2.70, gmb = 2.40;
   double disk_radius_mm = 0.5, air_voids = 0.04;
   std::string placement = "scan";
+  double binder_film_mm = 0.0;
 };
 
 inline void add_specimen_options(CLI::App& app, SpecimenOptions& o) {
@@ -44,6 +45,9 @@ inline void add_specimen_options(CLI::App& app, SpecimenOptions& o) {
   app.add_option("--placement", o.placement,
                  "where random tries jam: scan (systematic, the default) or jiggle (Monte Carlo moves; random)")
       ->check(CLI::IsMember({"scan", "jiggle"}))->capture_default_str();
+  app.add_option("--binder-film-mm", o.binder_film_mm,
+                 "least gap between two aggregates, a film of mastic (0: they may touch)")
+      ->check(CLI::Range(0.0, 10.0))->capture_default_str();
 }
 
 inline vrut::SpecimenSettings to_settings(const SpecimenOptions& o) {
@@ -60,6 +64,7 @@ inline vrut::SpecimenSettings to_settings(const SpecimenOptions& o) {
   s.disk_radius = o.disk_radius_mm;
   s.air_voids = o.air_voids;
   s.placement.method = o.placement == "jiggle" ? vrut::PlacementMethod::jiggle : vrut::PlacementMethod::scan;
+  s.placement.binder_film = o.binder_film_mm;
   return s;
 }
 

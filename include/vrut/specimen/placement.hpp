@@ -47,6 +47,9 @@ struct PlacementSettings {
   double tolerance = 0.002;             // area-fraction tolerance of the drawn set
   PlacementMethod method = PlacementMethod::scan;
   int jiggle_rounds = 400;              // at most, per piece that finds no room
+  // Least gap between two aggregates, mm: a film of mastic that keeps
+  // stones from touching at the start. 0: they may touch (the method).
+  double binder_film = 0.0;
 };
 
 struct Placement {
@@ -139,6 +142,8 @@ std::vector<Aggregate> draw_aggregates(const Stereology& st, double target_area,
 template <class Rng>
 Placement place_aggregates(const Stereology& st, const PlacementSettings& ps, Rng& rng) {
   ps.shape.validate();
+  if (!(ps.binder_film >= 0.0 && ps.binder_film < 0.5 * std::min(ps.width, ps.height)))
+    throw std::invalid_argument("the binder film must be at least 0 mm and well inside the section");
   if (!(ps.width > 0.0 && ps.height > 0.0)) throw std::invalid_argument("the section must have a positive size");
   const double section = ps.width * ps.height;
   Placement out;
@@ -151,12 +156,15 @@ Placement place_aggregates(const Stereology& st, const PlacementSettings& ps, Rn
   std::uniform_real_distribution<double> u(0.0, 1.0);
   double placed_area = 0.0;
   // skip: a placed piece that is being moved, which must not meet itself.
+  const double film = ps.binder_film;
   auto fits = [&](const Polygon& candidate, const Eigen::AlignedBox2d& box, int skip = -1) {
     if (box.min().x() < 0.0 || box.min().y() < 0.0 || box.max().x() > ps.width || box.max().y() > ps.height)
       return false;
-    return !grid.any_in_box(box, [&](int id) {
-      return id != skip && detail::bounds(out.aggregates[id].polygon).intersects(box) &&
-             polygons_overlap(out.aggregates[id].polygon, candidate);
+    const Eigen::AlignedBox2d reach(box.min() - Point(film, film), box.max() + Point(film, film));
+    return !grid.any_in_box(reach, [&](int id) {
+      const Polygon& other = out.aggregates[id].polygon;
+      return id != skip && detail::bounds(other).intersects(reach) &&
+             (polygons_overlap(other, candidate) || (film > 0.0 && polygon_distance(other, candidate) < film));
     });
   };
   auto random_tries = [&](Aggregate& a, int tries) {

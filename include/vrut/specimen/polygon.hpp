@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -113,6 +114,23 @@ inline bool polygons_overlap(const Polygon& a, const Polygon& b) {
     for (std::size_t j = 0; j < vb.size(); ++j)
       if (detail::segments_intersect(va[i], va[(i + 1) % va.size()], vb[j], vb[(j + 1) % vb.size()])) return true;
   return point_in_polygon(a, vb[0]) || point_in_polygon(b, va[0]);
+}
+
+// The least distance between two polygons that do not overlap: it lies
+// between a vertex of one and an edge of the other.
+inline double polygon_distance(const Polygon& a, const Polygon& b) {
+  auto vertex_to_edges = [](const Polygon& from, const Polygon& to) {
+    double best = std::numeric_limits<double>::infinity();
+    const auto& v = to.vertices;
+    for (const Point& p : from.vertices)
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        const Point e = v[(k + 1) % v.size()] - v[k];
+        const double t = std::clamp((p - v[k]).dot(e) / e.squaredNorm(), 0.0, 1.0);
+        best = std::min(best, (v[k] + t * e - p).norm());
+      }
+    return best;
+  };
+  return std::min(vertex_to_edges(a, b), vertex_to_edges(b, a));
 }
 
 // No two non-adjacent edges meet.
