@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 
 namespace {
@@ -38,6 +39,13 @@ vrut::RuttingNumerics short_numerics() {
   n.settle_steps = 1000;
   n.samples = 30;
   return n;
+}
+
+// The short test on the small section, in Space, stopped when stop() says so
+// and checkpointing to `checkpoints`.
+template <class Space>
+vrut::RuttingResult run_short(const std::function<bool()>& stop, vrut::CheckpointFile* checkpoints) {
+  return vrut::run_rutting<Space>(small_specimen(), short_test(), {}, short_numerics(), {}, {}, stop, checkpoints);
 }
 
 std::filesystem::path scratch(const std::string& name) {
@@ -71,55 +79,44 @@ void require_same(const vrut::RuttingResult& a, const vrut::RuttingResult& b) {
 
 TEMPLATE_LIST_TEST_CASE("a run stopped with a checkpoint and resumed ends bit for bit as the run never stopped",
                         "[checkpoint]", vrut_test::ExecutionSpaces) {
-  const vrut::Specimen sp = small_specimen();
-  const auto wt = short_test();
-  const auto num = short_numerics();
-  const auto whole = vrut::run_rutting<TestType>(sp, wt, {}, num);
+  const auto whole = run_short<TestType>({}, nullptr);
 
   const auto path = scratch("stopped.vrut");
   vrut::CheckpointFile first(path, 0.0, {{"run", "stopped at sample 7"}});
   int asked = 0;
-  const auto part = vrut::run_rutting<TestType>(sp, wt, {}, num, {}, {}, [&] { return ++asked == 7; }, &first);
+  const auto part = run_short<TestType>([&] { return ++asked == 7; }, &first);
   REQUIRE(part.interrupted);
   REQUIRE(first.written() == 1);
 
   auto again = vrut::CheckpointFile::resume(path, 0.0);
   CHECK(again.header().at("run") == "stopped at sample 7");
-  const auto resumed = vrut::run_rutting<TestType>(sp, wt, {}, num, {}, {}, {}, &again);
+  const auto resumed = run_short<TestType>({}, &again);
   CHECK_FALSE(resumed.interrupted);
   require_same(resumed, whole);
   CHECK(resumed.bonds == whole.bonds);
 }
 
 TEST_CASE("checkpoints written by the clock resume, on another backend too", "[checkpoint]") {
-  const vrut::Specimen sp = small_specimen();
-  const auto wt = short_test();
-  const auto num = short_numerics();
-  using Host = Kokkos::DefaultHostExecutionSpace;
   const auto path = scratch("clock.vrut");
   // Due at every sample but the last, or every one where the last falls a
   // step before the end: the file left holds the last sample before the end.
   vrut::CheckpointFile clock(path, 1e-9, {});
-  const auto whole = vrut::run_rutting<Host>(sp, wt, {}, num, {}, {}, {}, &clock);
-  CHECK(clock.written() >= num.samples - 1);
-  CHECK(clock.written() <= num.samples);
+  const auto whole = run_short<Kokkos::DefaultHostExecutionSpace>({}, &clock);
+  CHECK(clock.written() >= short_numerics().samples - 1);
+  CHECK(clock.written() <= short_numerics().samples);
   CHECK_FALSE(std::filesystem::exists(path.string() + ".writing"));
   auto again = vrut::CheckpointFile::resume(path, 0.0);
   // Every sum runs in a fixed order, so the backends agree bit for bit.
-  const auto resumed = vrut::run_rutting<Kokkos::Serial>(sp, wt, {}, num, {}, {}, {}, &again);
+  const auto resumed = run_short<Kokkos::Serial>({}, &again);
   require_same(resumed, whole);
 }
 
 TEST_CASE("a checkpoint that is damaged, from another version or of another run is refused", "[checkpoint]") {
-  const vrut::Specimen sp = small_specimen();
-  const auto wt = short_test();
-  const auto num = short_numerics();
-  using Host = Kokkos::DefaultHostExecutionSpace;
   const auto path = scratch("good.vrut");
   {
     vrut::CheckpointFile file(path, 0.0, {});
     int asked = 0;
-    vrut::run_rutting<Host>(sp, wt, {}, num, {}, {}, [&] { return ++asked == 3; }, &file);
+    run_short<Kokkos::DefaultHostExecutionSpace>([&] { return ++asked == 3; }, &file);
   }
   std::ifstream in(path, std::ios::binary);
   const std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -149,7 +146,8 @@ TEST_CASE("a checkpoint that is damaged, from another version or of another run 
 
   // The checkpoint of a 60 mm section cannot go on as a 70 mm one.
   auto wrong = vrut::CheckpointFile::resume(path, 0.0);
-  CHECK_THROWS_WITH(vrut::run_rutting<Host>(small_specimen(70.0), wt, {}, num, {}, {}, {}, &wrong),
+  CHECK_THROWS_WITH(vrut::run_rutting<Kokkos::DefaultHostExecutionSpace>(small_specimen(70.0), short_test(), {},
+                                                                         short_numerics(), {}, {}, {}, &wrong),
                     Catch::Contains("another run"));
 }
 
