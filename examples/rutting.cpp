@@ -184,6 +184,10 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--stone-friction", mat.stone_friction,
                  "aggregate-aggregate friction where no bond holds (-1: the same as --friction)")
       ->check(CLI::Range(-1.0, 10.0))->capture_default_str()->group("Materials");
+  app.add_flag("--film-between-stones", mat.film_between_stones,
+               "two stones meet through a mastic film (the mastic-aggregate Burger's law, stone friction), "
+               "not the rigid stone law")
+      ->group("Materials");
   app.add_option("--wall-friction", mat.wall_friction, "mould and plate friction")->check(CLI::Range(0.0, 10.0))
       ->capture_default_str()->group("Materials");
   app.add_option("--pressure-mpa", o.pressure_mpa, "wheel contact pressure p")->capture_default_str()->group("Loading");

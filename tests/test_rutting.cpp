@@ -122,6 +122,34 @@ TEST_CASE("friction is set per interaction: stone on stone apart from contacts t
   CHECK(apart(vrut::mastic_group, vrut::aggregate_group).first.friction == 0.5);
 }
 
+// Where stones meet through a film, two colours (two stones) get the
+// mastic-aggregate Burger's law with the stone friction; one colour (one
+// stone) keeps the rigid law; without the film every stone pair is rigid.
+TEST_CASE("a film between stones gives two stones the mastic-aggregate law", "[rutting][unit]") {
+  vrut::RuttingMaterials m;
+  m.stone_friction = 0.6;
+  const auto rigid = vrut::rutting_table(m, 0.05, 1e4, 3);
+  CHECK(rigid.groups() == 4);
+  CHECK(rigid(1, 2).use_second == 1);
+  CHECK(rigid(1, 2).second.normal.stiffness == rigid(1, 1).second.normal.stiffness);
+  m.film_between_stones = true;
+  const auto film = vrut::rutting_table(m, 0.05, 1e4, 3);
+  for (int a = 1; a <= 3; ++a) {
+    CHECK(film(a, a).use_second == 1);
+    CHECK(film(0, a).use_second == 0);
+    for (int b = 1; b <= 3; ++b) {
+      if (a == b) continue;
+      REQUIRE(film(a, b).use_second == 0);
+      const auto& through = film(a, b).first;
+      const auto& mastic_stone = film(0, 1).first;
+      CHECK(through.normal.maxwell_stiffness == mastic_stone.normal.maxwell_stiffness);
+      CHECK(through.shear.maxwell_viscosity == mastic_stone.shear.maxwell_viscosity);
+      CHECK(through.friction == 0.6);
+      CHECK(mastic_stone.friction == m.friction);
+    }
+  }
+}
+
 TEST_CASE("the loading follows SPEC section 1", "[rutting][unit]") {
   const vrut::WheelTracking wt;
   CHECK(wt.contact_length() * 1e3 == Approx(21.86).epsilon(1e-3));

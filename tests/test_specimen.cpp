@@ -2,6 +2,7 @@
 // placed aggregates against the 2D gradation, shapes, voids, reproducibility.
 #include "specimen_checks.hpp"
 
+#include <vrut/specimen/colouring.hpp>
 #include <vrut/specimen/specimen.hpp>
 
 #include <catch2/catch.hpp>
@@ -290,27 +291,33 @@ namespace {
 // Pairs of touching lattice neighbours (centres 2r apart) whose disks lie in
 // two different aggregates: stone on stone at the start. Found from the
 // disks alone, on a grid of cells one diameter wide.
-int stone_on_stone_pairs(const vrut::Specimen& sp) {
+// Calls f(i, j) for every two disks of two different aggregates whose
+// centres lie closer than `reach` (mm; a diameter: the neighbours that touch).
+template <class F>
+void for_stone_pairs_within(const vrut::Specimen& sp, double reach, F&& f) {
   const auto& c = sp.disks.centers;
-  const double d = 2.0 * sp.disks.radius, reach = d * (1.0 + 1e-6);
   std::map<std::pair<int, int>, std::vector<int>> cells;
   for (std::size_t i = 0; i < c.size(); ++i)
-    cells[{static_cast<int>(c[i].x() / d), static_cast<int>(c[i].y() / d)}].push_back(static_cast<int>(i));
-  int pairs = 0;
+    cells[{static_cast<int>(c[i].x() / reach), static_cast<int>(c[i].y() / reach)}].push_back(static_cast<int>(i));
   for (std::size_t i = 0; i < c.size(); ++i) {
     const int ai = sp.disks.aggregate[i];
     if (ai < 0) continue;
-    const int cx = static_cast<int>(c[i].x() / d), cy = static_cast<int>(c[i].y() / d);
+    const int cx = static_cast<int>(c[i].x() / reach), cy = static_cast<int>(c[i].y() / reach);
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy) {
         const auto it = cells.find({cx + dx, cy + dy});
         if (it == cells.end()) continue;
         for (int j : it->second) {
           const int aj = sp.disks.aggregate[j];
-          if (j > static_cast<int>(i) && aj >= 0 && aj != ai && (c[j] - c[i]).norm() < reach) ++pairs;
+          if (j > static_cast<int>(i) && aj >= 0 && aj != ai && (c[j] - c[i]).norm() < reach) f(static_cast<int>(i), j);
         }
       }
   }
+}
+
+int stone_on_stone_pairs(const vrut::Specimen& sp) {
+  int pairs = 0;
+  for_stone_pairs_within(sp, 2.0 * sp.disks.radius * (1.0 + 1e-6), [&](int, int) { ++pairs; });
   return pairs;
 }
 
@@ -334,4 +341,33 @@ TEST_CASE("a binder film keeps the stones apart at the start", "[specimen][place
   CHECK(stone_on_stone_pairs(coated) == 0);
   s.placement.binder_film = -1.0;
   CHECK_THROWS_WITH(vrut::generate_specimen(s), Catch::Contains("binder film"));
+}
+
+// The stone colours let the contact table tell two stones from one
+// (specimen/colouring.hpp): two stones that lie within the margin must
+// differ. Checked on the disks, not on the polygon distance the colouring
+// uses: a disk's centre lies inside its stone, so two centres closer than
+// the margin put their stones closer than it.
+TEST_CASE("stones closer than the margin get different colours", "[specimen][unit]") {
+  for (int mix : {1, 3}) {
+    vrut::SpecimenSettings s;
+    s.gradation = vrut::builtin_gradation(mix);
+    s.placement.width = 100.0;
+    s.seed = 4;
+    const vrut::Specimen sp = vrut::generate_specimen(s);
+    const double margin = 4.0 * sp.disks.radius;
+    const std::vector<int> colour = vrut::colour_aggregates(sp.placement, margin);
+    REQUIRE(colour.size() == sp.placement.aggregates.size());
+    int pairs = 0, clashes = 0, colours = 0;
+    for (int c : colour) colours = std::max(colours, c + 1);
+    for_stone_pairs_within(sp, margin, [&](int i, int j) {
+      ++pairs;
+      if (colour[sp.disks.aggregate[i]] == colour[sp.disks.aggregate[j]]) ++clashes;
+    });
+    INFO("mix " << mix << ": " << pairs << " disk pairs of two stones within " << margin << " mm, " << colours
+                << " colours for " << colour.size() << " stones");
+    CHECK(pairs > 0);
+    CHECK(clashes == 0);
+    CHECK(colours > 1);
+  }
 }

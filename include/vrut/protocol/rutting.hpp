@@ -10,6 +10,7 @@
 #include <vrut/core/simulation.hpp>
 #include <vrut/protocol/energy_check.hpp>
 #include <vrut/material/burgers_parameters.hpp>
+#include <vrut/specimen/colouring.hpp>
 #include <vrut/specimen/specimen.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -75,6 +76,11 @@ struct RuttingMaterials {
   // candidate of the gradation study: stone on stone against contacts
   // through mastic (docs/validation.md).
   double stone_friction = -1.0;
+  // Two stones meet through a mastic film: contacts between disks of two
+  // different aggregates get the mastic-aggregate Burger's law (no bond,
+  // stone friction) instead of method.md's rigid linear law. A candidate of
+  // the gradation study (docs/validation.md); off by default.
+  bool film_between_stones = false;
   double wall_friction = 0.0;           // mould walls and plate
 };
 
@@ -123,16 +129,24 @@ struct RuttingResult {
 
 using RuttingLaw = Choice<BurgersBonded, LinearBonded>;
 
-inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, double thickness, double shift) {
+// Group 0 is the mastic; the aggregates are groups 1 .. stone_colours, one
+// per colour (specimen/colouring.hpp), so that the table can tell two stones
+// from one. With one colour that is the method's two-group table.
+inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, double thickness, double shift,
+                                                 int stone_colours = 1) {
   const BurgersMacro reduced = m.mastic.shifted(TimeShift(shift));
   const MicroConversion conv = m.calibrated_conversion ? MicroConversion::calibrated(m.mastic_nu) : MicroConversion::seed();
-  AssignmentTable<RuttingLaw> table(2);
+  const double stone_friction = m.stone_friction < 0.0 ? m.friction : m.stone_friction;
+  AssignmentTable<RuttingLaw> table(1 + stone_colours);
   table.set(mastic_group, mastic_group, RuttingLaw::make_first(mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0, m.friction)));
-  table.set(mastic_group, aggregate_group,
-            RuttingLaw::make_first(mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction)));
-  table.set(aggregate_group, aggregate_group,
-            RuttingLaw::make_second(aggregate_params(m.aggregate_modulus, thickness, m.aggregate_nu,
-                                                     m.stone_friction < 0.0 ? m.friction : m.stone_friction)));
+  const auto stone = RuttingLaw::make_second(aggregate_params(m.aggregate_modulus, thickness, m.aggregate_nu, stone_friction));
+  const auto film = RuttingLaw::make_first(
+      mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, stone_friction));
+  for (int a = 1; a <= stone_colours; ++a) {
+    table.set(mastic_group, a,
+              RuttingLaw::make_first(mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction)));
+    for (int b = a; b <= stone_colours; ++b) table.set(a, b, a == b || !m.film_between_stones ? stone : film);
+  }
   return table;
 }
 
@@ -265,7 +279,16 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   const int count = static_cast<int>(specimens.size());
   for (const Specimen& sp : specimens) wt.validate(sp.settings.placement.width * 1e-3);
   const double t = wt.wheel_width;
-  const auto table = rutting_table(mat, t, num.shift);
+  // Where stones meet through a film, each stone's disks get its colour's
+  // group; the margin (two disk diameters) covers how far neighbours close in.
+  std::vector<std::vector<int>> colours(count);
+  int stone_colours = 1;
+  if (mat.film_between_stones)
+    for (int e = 0; e < count; ++e) {
+      colours[e] = colour_aggregates(specimens[e].placement, 4.0 * specimens[e].disks.radius);
+      for (int c : colours[e]) stone_colours = std::max(stone_colours, c + 1);
+    }
+  const auto table = rutting_table(mat, t, num.shift, stone_colours);
   SimulationSettings settings;
   settings.thickness = t;
   settings.gravity = {0.0, -wt.gravity};
@@ -273,9 +296,16 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   integrator.damping = num.settle_damping;
   ParticleSet all;
   std::vector<std::pair<int, int>> bonds;
-  for (const Specimen& sp : specimens) {
+  for (int e = 0; e < count; ++e) {
+    const Specimen& sp = specimens[e];
     const int offset = static_cast<int>(all.size());
-    all.append_specimen(to_particle_set(sp, mat.mastic_density, mat.aggregate_density));
+    ParticleSet set = to_particle_set(sp, mat.mastic_density, mat.aggregate_density);
+    if (mat.film_between_stones) {
+      const std::vector<int>& colour = colours[e];
+      for (std::size_t i = 0; i < set.size(); ++i)
+        if (sp.disks.aggregate[i] >= 0) set.group[i] = aggregate_group + colour[sp.disks.aggregate[i]];
+    }
+    all.append_specimen(set);
     for (const auto& [i, j] : sp.disks.bonds) bonds.emplace_back(i + offset, j + offset);
   }
   Simulation<RuttingLaw, Space, CentralDifference, LoadControl> sim(all, table, settings, integrator, space);
@@ -467,7 +497,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     for (int i = first; i < last; ++i) {
       res.vx.push_back(v(i).x);
       res.vy.push_back(v(i).y);
-      res.group.push_back(g(i));
+      res.group.push_back(g(i) == mastic_group ? mastic_group : aggregate_group);  // colours are stones
     }
     finish_deformation(res, wt);
   }
