@@ -56,19 +56,35 @@ TEST_CASE("at alpha_T = 1e4 the creep matches once the inertial transient has pa
   CHECK(worst_deviation(res, 20.0) < 0.05);
 }
 
-TEST_CASE("seed rules make the block stiffer and more viscous by the lattice factor", "[burgers][creep][physics]") {
-  const auto cs = small_strain(1e3, vrut::MicroConversion::seed());
-  const vrut::CreepResult res = vrut::run_creep<Kokkos::DefaultHostExecutionSpace>(cs);
-  const vrut::BurgersFit f = fit(res, cs.stress);
-  // Lattice theory: every apparent constant is c = 2 sqrt(3)(1+b)/(3+b) times
-  // the macro one (b = 1/(2(1+nu))), times the block's finite-size factor.
+// Against a reference this code did not produce: the infinite hexagonal
+// lattice (docs/burgers.md) makes every apparent constant c times the macro
+// one, c = 2 sqrt(3)(1+b)/(3+b), b = 1/(2(1+nu)). A finite block is softer
+// at its free sides, by a part that falls as 1/width: the blocks of 20 x 10
+// and 40 x 20 disks extrapolate (Richardson, 2 r40 - r20) to the infinite
+// lattice. Measured 2.7 % and 1.5 % below c, and 0.2 % in the limit.
+// The 1 % tolerance covers the remaining strain (1.1 % at 0.002 MPa; the
+// lattice softens with strain, by about 0.3 % here, from the slope between
+// 0.002 and 0.01 MPa) and what the 1/width law leaves (it predicts the 80 x 40
+// block within 0.05 %). Only eta1, the long-time slope: E1 carries the
+// start-up transient, which grows with the block, and E2 and eta2 share it
+// through the fit.
+TEST_CASE("seed rules: a growing block tends to the lattice theory's stiffness and viscosity",
+          "[burgers][creep][physics]") {
+  auto ratio = [](int columns, int rows) {
+    auto cs = small_strain(1e3, vrut::MicroConversion::seed());
+    cs.stress = 0.002e6;
+    cs.columns = columns;
+    cs.rows = rows;
+    const vrut::CreepResult res = vrut::run_creep<Kokkos::DefaultHostExecutionSpace>(cs);
+    return fit(res, cs.stress).macro.eta1 / cs.macro.eta1;
+  };
   const double b = 1.0 / 2.7, c = 2.0 * std::sqrt(3.0) * (1.0 + b) / (3.0 + b);
-  const double expected = c / vrut::MicroConversion::finite_size_factor;
-  const double ratio = f.macro.eta1 / cs.macro.eta1;
-  std::printf("seed rules: apparent/macro eta1 %.4f E1 %.4f E2 %.4f eta2 %.4f (lattice x finite size %.4f)\n", ratio,
-              f.macro.E1 / cs.macro.E1, f.macro.E2 / cs.macro.E2, f.macro.eta2 / cs.macro.eta2, expected);
-  CHECK(ratio == Approx(expected).epsilon(0.02));
-  CHECK(f.macro.E2 / cs.macro.E2 == Approx(expected).epsilon(0.05));
+  const double r20 = ratio(20, 10), r40 = ratio(40, 20), limit = 2.0 * r40 - r20;
+  std::printf("seed rules, apparent/macro eta1 over lattice theory %.4f: 20 x 10 %.4f, 40 x 20 %.4f, limit %.4f\n", c,
+              r20 / c, r40 / c, limit / c);
+  CHECK(r20 < r40);
+  CHECK(r40 < c);
+  CHECK(limit == Approx(c).epsilon(0.01));
 }
 
 #if defined(KOKKOS_ENABLE_SERIAL) && defined(KOKKOS_ENABLE_OPENMP)
