@@ -139,12 +139,13 @@ inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, doub
   const double stone_friction = m.stone_friction < 0.0 ? m.friction : m.stone_friction;
   AssignmentTable<RuttingLaw> table(1 + stone_colours);
   table.set(mastic_group, mastic_group, RuttingLaw::make_first(mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0, m.friction)));
+  const auto mastic_stone =
+      RuttingLaw::make_first(mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction));
   const auto stone = RuttingLaw::make_second(aggregate_params(m.aggregate_modulus, thickness, m.aggregate_nu, stone_friction));
   const auto film = RuttingLaw::make_first(
       mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, stone_friction));
   for (int a = 1; a <= stone_colours; ++a) {
-    table.set(mastic_group, a,
-              RuttingLaw::make_first(mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction)));
+    table.set(mastic_group, a, mastic_stone);
     for (int b = a; b <= stone_colours; ++b) table.set(a, b, a == b || !m.film_between_stones ? stone : film);
   }
   return table;
