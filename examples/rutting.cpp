@@ -185,8 +185,14 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                  "aggregate-aggregate friction where no bond holds (-1: the same as --friction)")
       ->check(CLI::Range(-1.0, 10.0))->capture_default_str()->group("Materials");
   app.add_flag("--film-between-stones", mat.film_between_stones,
-               "two stones meet through a mastic film (the mastic-aggregate Burger's law, stone friction), "
-               "not the rigid stone law")
+               "two stones meet through a mastic film (Burger's, stone friction) that squeezes out to the "
+               "stone law, not the rigid stone law alone")
+      ->group("Materials");
+  app.add_option("--film-gap", mat.film_gap,
+                 "the film's thickness, in disk diameters (0.42: the mean gap between two stones' outlines "
+                 "where their disks are neighbours)")
+      ->check(CLI::Range(0.01, 0.99))->capture_default_str()->group("Materials");
+  app.add_flag("--film-endless", mat.film_endless, "the film never squeezes out: the stones never bear")
       ->group("Materials");
   app.add_option("--wall-friction", mat.wall_friction, "mould and plate friction")->check(CLI::Range(0.0, 10.0))
       ->capture_default_str()->group("Materials");

@@ -3,6 +3,7 @@
 // time-temperature superposition.
 #include <vrut/contact/burgers.hpp>
 #include <vrut/contact/composite.hpp>
+#include <vrut/contact/film.hpp>
 #include <vrut/material/burgers_parameters.hpp>
 
 #include <Eigen/Dense>
@@ -186,4 +187,69 @@ TEST_CASE("an unbonded Burger's contact does not pull and is capped by friction"
   CHECK(f2.normal == 0.0);
   CHECK(s.normal.force == 0.0);  // the stored tension is dropped
   CHECK(f2.shear == 0.0);
+}
+
+// A film between two stones under a constant force: it creeps as the
+// Burger's element alone until the overlap reaches the film's thickness; then
+// the stones' spring takes the load over, and as the film relaxes the
+// overlap tends to thickness + force / stone stiffness. Each step's
+// displacement is solved here from the element (linear in du) and the spring
+// (linear beyond the thickness); the slot must return the applied force.
+TEST_CASE("a film creeps as Burger's until it squeezes out, then the stones bear", "[burgers][physics]") {
+  const BurgersElement e = spec_normal();
+  const double force = 100.0, dt = 1e-3 * tau_min(e);
+  const double t_touch = e.kelvin_viscosity / e.kelvin_stiffness;
+  vrut::FilmNormal::params_type p;
+  p.film = e;
+  p.thickness = exact_creep(e, force, t_touch);  // the stones touch at t_touch
+  p.stone_stiffness = 10.0 * e.maxwell_stiffness;
+  const double limit = p.thickness + force / p.stone_stiffness;
+
+  BurgersHistory h;
+  vrut::ContactGeometry g;
+  g.dt = 1e-300 * dt;  // the elastic jump
+  g.normal_increment = du_for_force(e, h, force, g.dt);
+  g.overlap = g.normal_increment;
+  CHECK(vrut::FilmNormal::force(p, h, g) == Approx(force).epsilon(1e-12));
+  g.dt = dt;
+  double worst_creep = 0.0, worst_force = 0.0, touched_at = -1.0, highest = 0.0;
+  // Long enough for the film to relax: 30 of its slowest relaxation times
+  // (the element under held displacement, exact_relaxation's system; the
+  // spring, 10 times as stiff, holds the overlap to within about 10 %).
+  Eigen::Matrix2d a;
+  a << -e.maxwell_stiffness * (1.0 / e.maxwell_viscosity + 1.0 / e.kelvin_viscosity),
+      e.maxwell_stiffness * e.kelvin_stiffness / e.kelvin_viscosity, 1.0 / e.kelvin_viscosity,
+      -e.kelvin_stiffness / e.kelvin_viscosity;
+  const double slowest = 1.0 / a.eigenvalues().real().cwiseAbs().minCoeff();
+  const long steps = std::lround((t_touch + 30.0 * slowest) / dt);
+  for (long s = 1; s <= steps; ++s) {
+    BurgersHistory a = h, b = h;
+    const double f0 = vrut::burgers_step(e, a, 0.0, dt), slope = vrut::burgers_step(e, b, 1.0, dt) - f0;
+    double du = (force - f0) / slope;
+    if (g.overlap + du > p.thickness)
+      du = (force - f0 + p.stone_stiffness * (p.thickness - g.overlap)) / (slope + p.stone_stiffness);
+    g.normal_increment = du;
+    g.overlap += du;
+    worst_force = std::max(worst_force, std::abs(vrut::FilmNormal::force(p, h, g) / force - 1.0));
+    highest = std::max(highest, g.overlap);
+    if (touched_at < 0.0 && g.overlap > p.thickness) touched_at = s * dt;
+    if (touched_at < 0.0) worst_creep = std::max(worst_creep, std::abs(g.overlap / exact_creep(e, force, s * dt) - 1.0));
+  }
+  INFO("creep error " << worst_creep << ", touched at " << touched_at << " s (exact " << t_touch << " s)");
+  CHECK(worst_force < 1e-9);
+  CHECK(worst_creep < 1e-4);
+  // The crossing lies within a step of the exact time.
+  CHECK(std::abs(touched_at - t_touch) <= 1.0001 * dt);
+  // The film pushes too, so the overlap never passes the stones' limit; after
+  // 30 relaxation times the film carries about e^-27 of the force.
+  CHECK(highest <= limit * (1.0 + 1e-12));
+  CHECK(g.overlap == Approx(limit).epsilon(1e-6));
+  // Without stones it is the Burger's element, bit for bit.
+  vrut::FilmNormal::params_type alone;
+  alone.film = e;
+  BurgersHistory x, y;
+  g.normal_increment = 1e-5;
+  g.overlap = 1.0;  // far past any thickness: no stones, no spring
+  CHECK(vrut::FilmNormal::force(alone, x, g) == vrut::burgers_step(e, y, 1e-5, dt));
+  CHECK(vrut::FilmNormal::stiffness(alone) == e.maxwell_stiffness);
 }

@@ -125,29 +125,47 @@ TEST_CASE("friction is set per interaction: stone on stone apart from contacts t
 // Where stones meet through a film, two colours (two stones) get the
 // mastic-aggregate Burger's law with the stone friction; one colour (one
 // stone) keeps the rigid law; without the film every stone pair is rigid.
-TEST_CASE("a film between stones gives two stones the mastic-aggregate law", "[rutting][unit]") {
+TEST_CASE("a film between stones: the mastic over the film's thickness, then the stone spring", "[rutting][unit]") {
   vrut::RuttingMaterials m;
   m.stone_friction = 0.6;
-  const auto rigid = vrut::rutting_table(m, 0.05, 1e4, 3);
+  const double d = 1e-3;
+  const auto rigid = vrut::rutting_table(m, 0.05, 1e4, 3, d);
   CHECK(rigid.groups() == 4);
   CHECK(rigid(1, 2).use_second == 1);
   CHECK(rigid(1, 2).second.normal.stiffness == rigid(1, 1).second.normal.stiffness);
   m.film_between_stones = true;
-  const auto film = vrut::rutting_table(m, 0.05, 1e4, 3);
+  m.film_gap = 0.4;
+  const auto film = vrut::rutting_table(m, 0.05, 1e4, 3, d);
+  // The mastic-mastic contact is the mastic over one diameter (factor 1):
+  // the film, 0.4 of it, is 1 / 0.4 times as stiff and as viscous.
+  const auto& mastic = film(0, 0).first;
   for (int a = 1; a <= 3; ++a) {
     CHECK(film(a, a).use_second == 1);
     CHECK(film(0, a).use_second == 0);
+    CHECK(film(0, a).first.normal.stone_stiffness == 0.0);  // mastic on a stone: no stones to bear
     for (int b = 1; b <= 3; ++b) {
       if (a == b) continue;
       REQUIRE(film(a, b).use_second == 0);
       const auto& through = film(a, b).first;
-      const auto& mastic_stone = film(0, 1).first;
-      CHECK(through.normal.maxwell_stiffness == mastic_stone.normal.maxwell_stiffness);
-      CHECK(through.shear.maxwell_viscosity == mastic_stone.shear.maxwell_viscosity);
+      CHECK(through.normal.film.maxwell_stiffness == Approx(mastic.normal.film.maxwell_stiffness / 0.4).epsilon(1e-12));
+      CHECK(through.normal.film.kelvin_viscosity == Approx(mastic.normal.film.kelvin_viscosity / 0.4).epsilon(1e-12));
+      CHECK(through.shear.maxwell_viscosity == Approx(mastic.shear.maxwell_viscosity / 0.4).epsilon(1e-12));
+      CHECK(through.normal.thickness == Approx(0.4e-3).epsilon(1e-12));
+      CHECK(through.normal.stone_stiffness == rigid(1, 1).second.normal.stiffness);
       CHECK(through.friction == 0.6);
-      CHECK(mastic_stone.friction == m.friction);
+      CHECK(film(0, a).first.friction == m.friction);
     }
   }
+  // The study's first film: the mastic-aggregate law (half a diameter), endless.
+  m.film_gap = 0.5;
+  m.film_endless = true;
+  const auto endless = vrut::rutting_table(m, 0.05, 1e4, 3, d);
+  CHECK(endless(1, 2).first.normal.stone_stiffness == 0.0);
+  CHECK(endless(1, 2).first.normal.film.maxwell_stiffness == endless(0, 1).first.normal.film.maxwell_stiffness);
+  m.film_gap = 1.2;
+  CHECK_THROWS_WITH(vrut::rutting_table(m, 0.05, 1e4, 3, d), Catch::Contains("thinner than a disk"));
+  m.film_gap = 0.4;
+  CHECK_THROWS_WITH(vrut::rutting_table(m, 0.05, 1e4, 3), Catch::Contains("disk diameter"));
 }
 
 TEST_CASE("the loading follows SPEC section 1", "[rutting][unit]") {

@@ -7,6 +7,7 @@
 // deformation curve, rut depth, dynamic stability.
 #include <vrut/contact/choice.hpp>
 #include <vrut/contact/composite.hpp>
+#include <vrut/contact/film.hpp>
 #include <vrut/core/simulation.hpp>
 #include <vrut/protocol/energy_check.hpp>
 #include <vrut/material/burgers_parameters.hpp>
@@ -77,10 +78,20 @@ struct RuttingMaterials {
   // through mastic (docs/validation.md).
   double stone_friction = -1.0;
   // Two stones meet through a mastic film: contacts between disks of two
-  // different aggregates get the mastic-aggregate Burger's law (no bond,
-  // stone friction) instead of method.md's rigid linear law. A candidate of
-  // the gradation study (docs/validation.md); off by default.
+  // different aggregates get a film law (contact/film.hpp; no bond, stone
+  // friction) instead of method.md's rigid linear law. A candidate of the
+  // gradation study (docs/validation.md); off by default.
   bool film_between_stones = false;
+  // The film's thickness, as a fraction of the disk diameter. Where two
+  // stones' disks are neighbours, the stones' true outlines lie 0.41-0.44
+  // diameters apart on average (mixes 1-3; benchmarks/film_gaps.cpp): the
+  // mastic that the 1 mm disks cannot show. The film's Burger's law is the
+  // mastic's over that length (factor 1 / film_gap, as the mastic-aggregate
+  // factor 2 is the mastic over half a diameter), and the stones' linear
+  // spring bears once the overlap exceeds it.
+  double film_gap = 0.42;
+  // The film never squeezes out: no stone spring (the study's first film).
+  bool film_endless = false;
   double wall_friction = 0.0;           // mould walls and plate
 };
 
@@ -127,23 +138,34 @@ struct RuttingResult {
   double dt = 0.0, wall_seconds = 0.0;
 };
 
-using RuttingLaw = Choice<BurgersBonded, LinearBonded>;
+using RuttingLaw = Choice<BurgersFilmBonded, LinearBonded>;
 
 // Group 0 is the mastic; the aggregates are groups 1 .. stone_colours, one
 // per colour (specimen/colouring.hpp), so that the table can tell two stones
 // from one. With one colour that is the method's two-group table.
+// disk_diameter (m) sizes the film between stones; only the film needs it.
 inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, double thickness, double shift,
-                                                 int stone_colours = 1) {
+                                                 int stone_colours = 1, double disk_diameter = 0.0) {
   const BurgersMacro reduced = m.mastic.shifted(TimeShift(shift));
   const MicroConversion conv = m.calibrated_conversion ? MicroConversion::calibrated(m.mastic_nu) : MicroConversion::seed();
   const double stone_friction = m.stone_friction < 0.0 ? m.friction : m.stone_friction;
   AssignmentTable<RuttingLaw> table(1 + stone_colours);
-  table.set(mastic_group, mastic_group, RuttingLaw::make_first(mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0, m.friction)));
-  const auto mastic_stone =
-      RuttingLaw::make_first(mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction));
-  const auto stone = RuttingLaw::make_second(aggregate_params(m.aggregate_modulus, thickness, m.aggregate_nu, stone_friction));
-  const auto film = RuttingLaw::make_first(
-      mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, stone_friction));
+  table.set(mastic_group, mastic_group,
+            RuttingLaw::make_first(film_params(mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0, m.friction))));
+  const auto mastic_stone = RuttingLaw::make_first(
+      film_params(mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction)));
+  const auto stone_params = aggregate_params(m.aggregate_modulus, thickness, m.aggregate_nu, stone_friction);
+  const auto stone = RuttingLaw::make_second(stone_params);
+  RuttingLaw::params_type film{};
+  if (m.film_between_stones) {
+    if (!(m.film_gap > 0.0 && m.film_gap < 1.0))
+      throw std::invalid_argument("the film between stones must be thinner than a disk and positive (film gap in (0, 1))");
+    if (!(disk_diameter > 0.0)) throw std::invalid_argument("the film between stones needs the disk diameter");
+    const auto mastic = mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0 / m.film_gap, stone_friction);
+    film = RuttingLaw::make_first(m.film_endless ? film_params(mastic)
+                                                 : film_params(mastic, m.film_gap * disk_diameter,
+                                                               stone_params.normal.stiffness));
+  }
   for (int a = 1; a <= stone_colours; ++a) {
     table.set(mastic_group, a, mastic_stone);
     for (int b = a; b <= stone_colours; ++b) table.set(a, b, a == b || !m.film_between_stones ? stone : film);
@@ -289,7 +311,10 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
       colours[e] = colour_aggregates(specimens[e].placement, 4.0 * specimens[e].disks.radius);
       for (int c : colours[e]) stone_colours = std::max(stone_colours, c + 1);
     }
-  const auto table = rutting_table(mat, t, num.shift, stone_colours);
+  for (const Specimen& sp : specimens)
+    if (sp.disks.radius != specimens[0].disks.radius)
+      throw std::invalid_argument("an ensemble's specimens must share one disk size");
+  const auto table = rutting_table(mat, t, num.shift, stone_colours, 2e-3 * specimens[0].disks.radius);
   SimulationSettings settings;
   settings.thickness = t;
   settings.gravity = {0.0, -wt.gravity};

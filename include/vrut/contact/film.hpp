@@ -1,0 +1,61 @@
+#pragma once
+// A mastic film between two stones: the normal slot of a composed law (see
+// composite.hpp). The film's Burger's element carries the load in parallel
+// with the stones' linear spring, and the spring bears only once the overlap
+// exceeds the film's thickness: the film has squeezed out and the stones
+// touch. A film creeps, but not without end, as BurgersNormal alone would.
+//
+// With no stone spring (stone_stiffness 0, the default) the slot is
+// BurgersNormal, bit for bit: the mastic contacts of the rutting table use
+// it that way.
+#include <vrut/contact/burgers.hpp>
+#include <vrut/contact/composite.hpp>
+#include <vrut/contact/geometry.hpp>
+
+#include <Kokkos_Core.hpp>
+
+namespace vrut {
+
+struct FilmNormal {
+  struct params_type {
+    BurgersElement film;
+    double thickness = 0.0;        // m: the overlap at which the stones touch
+    double stone_stiffness = 0.0;  // N/m, the stones' spring beyond it; 0: no stones
+  };
+  // Only the film's force is history; the stones' spring is elastic.
+  using state_type = BurgersHistory;
+
+  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const ContactGeometry& g) {
+    double f = burgers_step(p.film, s, g.normal_increment, g.dt);
+    if (p.stone_stiffness > 0.0 && g.overlap > p.thickness) f += p.stone_stiffness * (g.overlap - p.thickness);
+    return f;
+  }
+  static void prepare(params_type& p, double dt) { burgers_prepare(p.film, dt); }
+  // The total can pull only where the film does (the spring never pulls).
+  KOKKOS_INLINE_FUNCTION static void cut_tension(const params_type&, state_type& s) {
+    if (s.force < 0.0) s.force = 0.0;
+  }
+  // In parallel, the two springs add (this bounds the critical time step).
+  KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) {
+    return p.film.maxwell_stiffness + p.stone_stiffness;
+  }
+};
+
+// The rutting test's mastic law: Burger's with a bond, and a film where the
+// table gives it stones.
+using BurgersFilmBonded = Composite<FilmNormal, BurgersShear, ContactBond>;
+
+// A mastic law as a film law: with stone_stiffness 0 the same law.
+inline BurgersFilmBonded::params_type film_params(const BurgersBonded::params_type& mastic, double thickness = 0.0,
+                                                  double stone_stiffness = 0.0) {
+  BurgersFilmBonded::params_type p;
+  p.normal.film = mastic.normal;
+  p.normal.thickness = thickness;
+  p.normal.stone_stiffness = stone_stiffness;
+  p.shear = mastic.shear;
+  p.bond = mastic.bond;
+  p.friction = mastic.friction;
+  return p;
+}
+
+}  // namespace vrut
