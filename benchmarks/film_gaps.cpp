@@ -9,7 +9,7 @@
 //     mastic disk's centre to the outline (the mastic-aggregate factor is one
 //     diameter over it).
 // Both as fractions of the disk diameter, over the seeds asked for.
-//   vrut-film-gaps [seeds, default 3]
+//   vrut-film-gaps [seeds, default 3] [disk radius in mm, default 1 as vrut-rutting]
 #include <vrut/specimen/specimen.hpp>
 
 #include <cmath>
@@ -27,7 +27,7 @@ struct Tally {
 };
 
 // The fraction of the segment a-b outside every given outline, sampled at
-// 1,000 midpoints (a resolution of 1 micrometre for 1 mm disks).
+// 1,000 midpoints (a resolution of 2 micrometres for 2 mm disks).
 double outside_fraction(const vrut::Point& a, const vrut::Point& b, const vrut::Polygon& p, const vrut::Polygon& q) {
   const int samples = 1000;
   int outside = 0;
@@ -42,8 +42,9 @@ double outside_fraction(const vrut::Point& a, const vrut::Point& b, const vrut::
 
 int main(int argc, char** argv) {
   const int seeds = argc > 1 ? std::atoi(argv[1]) : 3;
-  if (seeds < 1) {
-    std::fprintf(stderr, "usage: vrut-film-gaps [seeds >= 1]\n");
+  const double radius = argc > 2 ? std::atof(argv[2]) : 1.0;
+  if (seeds < 1 || !(radius > 0.0)) {
+    std::fprintf(stderr, "usage: vrut-film-gaps [seeds >= 1] [disk radius mm > 0]\n");
     return 2;
   }
   std::printf("mix | stone-stone neighbours | film gap (mean, sd) | mastic-stone neighbours | mastic length (mean, sd)\n");
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
       vrut::SpecimenSettings settings;
       settings.gradation = vrut::builtin_gradation(mix);
       settings.seed = static_cast<std::uint64_t>(seed);
+      settings.disk_radius = radius;
       const vrut::Specimen sp = vrut::generate_specimen(settings);
       const auto& centre = sp.disks.centers;
       const auto& owner = sp.disks.aggregate;

@@ -189,7 +189,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                "stone law, not the rigid stone law alone")
       ->group("Materials");
   app.add_option("--film-gap", mat.film_gap,
-                 "the film's thickness, in disk diameters (0.42: the mean gap between two stones' outlines "
+                 "the film's thickness, in disk diameters (0.40: the mean gap between two stones' outlines in 2# "
                  "where their disks are neighbours)")
       ->check(CLI::Range(0.01, 0.99))->capture_default_str()->group("Materials");
   app.add_flag("--film-endless", mat.film_endless, "the film never squeezes out: the stones never bear")

@@ -74,6 +74,16 @@ CreepError creep(const BurgersElement& e, double force, double dt, double durati
   return err;
 }
 
+// The slowest time constant of the element's relaxation under held
+// displacement (the system of exact_relaxation).
+double slowest_relaxation(const BurgersElement& e) {
+  Eigen::Matrix2d a;
+  a << -e.maxwell_stiffness * (1.0 / e.maxwell_viscosity + 1.0 / e.kelvin_viscosity),
+      e.maxwell_stiffness * e.kelvin_stiffness / e.kelvin_viscosity, 1.0 / e.kelvin_viscosity,
+      -e.kelvin_stiffness / e.kelvin_viscosity;
+  return 1.0 / a.eigenvalues().real().cwiseAbs().minCoeff();
+}
+
 double tau_min(const BurgersElement& e) {
   return std::min(e.maxwell_viscosity / e.maxwell_stiffness, e.kelvin_viscosity / e.kelvin_stiffness);
 }
@@ -216,11 +226,7 @@ TEST_CASE("a film creeps as Burger's until it squeezes out, then the stones bear
   // Long enough for the film to relax: 30 of its slowest relaxation times
   // (the element under held displacement, exact_relaxation's system; the
   // spring, 10 times as stiff, holds the overlap to within about 10 %).
-  Eigen::Matrix2d a;
-  a << -e.maxwell_stiffness * (1.0 / e.maxwell_viscosity + 1.0 / e.kelvin_viscosity),
-      e.maxwell_stiffness * e.kelvin_stiffness / e.kelvin_viscosity, 1.0 / e.kelvin_viscosity,
-      -e.kelvin_stiffness / e.kelvin_viscosity;
-  const double slowest = 1.0 / a.eigenvalues().real().cwiseAbs().minCoeff();
+  const double slowest = slowest_relaxation(e);
   const long steps = std::lround((t_touch + 30.0 * slowest) / dt);
   for (long s = 1; s <= steps; ++s) {
     BurgersHistory a = h, b = h;
@@ -252,4 +258,46 @@ TEST_CASE("a film creeps as Burger's until it squeezes out, then the stones bear
   g.overlap = 1.0;  // far past any thickness: no stones, no spring
   CHECK(vrut::FilmNormal::force(alone, x, g) == vrut::burgers_step(e, y, 1e-5, dt));
   CHECK(vrut::FilmNormal::stiffness(alone) == e.maxwell_stiffness);
+}
+
+// Two stones pressed together through a film, then sheared a little and
+// held: while they touch, the stones' shear spring holds its force and only
+// the film's part relaxes, so the shear tends to k_s times the slip; apart,
+// the film alone relaxes it to nothing. Either way under the friction cap.
+TEST_CASE("stones that bear on each other hold a shear; a film alone lets it relax", "[burgers][physics]") {
+  using Law = vrut::BurgersFilmBonded;
+  const double thickness = 1e-4, kn = 50.0 * spec_normal().maxwell_stiffness, ks = kn / 2.5;
+  const Law::params_type p = vrut::film_params(
+      vrut::mastic_params(vrut::BurgersMacro{}, 0.05, 0.35, vrut::MicroConversion::seed(), 2.5, 0.5), thickness, kn, ks);
+  const double slip = 1e-6;
+  const double dt = 1e-3 * tau_min(p.shear.film);
+  const double hold = 30.0 * std::max(slowest_relaxation(p.normal.film), slowest_relaxation(p.shear.film));
+  for (const double overlap : {2.0 * thickness, 0.5 * thickness}) {
+    const bool touching = overlap > thickness;
+    Law::state_type s{};
+    vrut::ContactGeometry g;
+    g.dt = 1e-300;  // press, then shear: elastic jumps
+    g.overlap = overlap;
+    g.normal_increment = overlap;
+    Law::force(p, s, g);
+    g.normal_increment = 0.0;
+    g.shear_increment = slip;
+    vrut::ContactForce f = Law::force(p, s, g);
+    g.shear_increment = 0.0;
+    g.dt = dt;
+    double worst_cap = 0.0;
+    for (long k = 0, steps = std::lround(hold / dt); k < steps; ++k) {
+      f = Law::force(p, s, g);
+      worst_cap = std::max(worst_cap, std::abs(f.shear) - p.friction * f.normal);
+    }
+    INFO((touching ? "touching" : "apart") << ": shear " << f.shear << " N, normal " << f.normal << " N");
+    CHECK(worst_cap <= 0.0);
+    if (touching) {
+      CHECK(f.normal == Approx(kn * (overlap - thickness)).epsilon(1e-9));
+      CHECK(f.shear == Approx(-ks * slip).epsilon(1e-9));
+    } else {
+      CHECK(std::abs(f.normal) < 1e-9 * kn * thickness);
+      CHECK(std::abs(f.shear) < 1e-9 * ks * slip);
+    }
+  }
 }

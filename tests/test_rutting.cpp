@@ -149,9 +149,11 @@ TEST_CASE("a film between stones: the mastic over the film's thickness, then the
       const auto& through = film(a, b).first;
       CHECK(through.normal.film.maxwell_stiffness == Approx(mastic.normal.film.maxwell_stiffness / 0.4).epsilon(1e-12));
       CHECK(through.normal.film.kelvin_viscosity == Approx(mastic.normal.film.kelvin_viscosity / 0.4).epsilon(1e-12));
-      CHECK(through.shear.maxwell_viscosity == Approx(mastic.shear.maxwell_viscosity / 0.4).epsilon(1e-12));
+      CHECK(through.shear.film.maxwell_viscosity == Approx(mastic.shear.film.maxwell_viscosity / 0.4).epsilon(1e-12));
       CHECK(through.normal.thickness == Approx(0.4e-3).epsilon(1e-12));
       CHECK(through.normal.stone_stiffness == rigid(1, 1).second.normal.stiffness);
+      CHECK(through.shear.thickness == Approx(0.4e-3).epsilon(1e-12));
+      CHECK(through.shear.stone_stiffness == rigid(1, 1).second.shear.stiffness);
       CHECK(through.friction == 0.6);
       CHECK(film(0, a).first.friction == m.friction);
     }
@@ -161,6 +163,7 @@ TEST_CASE("a film between stones: the mastic over the film's thickness, then the
   m.film_endless = true;
   const auto endless = vrut::rutting_table(m, 0.05, 1e4, 3, d);
   CHECK(endless(1, 2).first.normal.stone_stiffness == 0.0);
+  CHECK(endless(1, 2).first.shear.stone_stiffness == 0.0);
   CHECK(endless(1, 2).first.normal.film.maxwell_stiffness == endless(0, 1).first.normal.film.maxwell_stiffness);
   m.film_gap = 1.2;
   CHECK_THROWS_WITH(vrut::rutting_table(m, 0.05, 1e4, 3, d), Catch::Contains("thinner than a disk"));

@@ -41,18 +41,56 @@ struct FilmNormal {
   }
 };
 
+// The shear slot of the same film: the film's Burger's element in parallel
+// with the stones' shear spring, which holds while the stones touch (the
+// overlap exceeds the thickness) and lets go when they part. Stones that
+// bear on each other do not slide below their friction, as a creeping film
+// alone would. The Coulomb cap takes the stones' part first (they slide),
+// then the film's.
+struct FilmShear {
+  struct params_type {
+    BurgersElement film;
+    double thickness = 0.0;        // m, as FilmNormal's
+    double stone_stiffness = 0.0;  // N/m; 0: no stones
+  };
+  struct state_type {
+    BurgersHistory film;
+    double stone = 0.0;  // the stones' shear force
+  };
+  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const ContactGeometry& g) {
+    const double f = burgers_step(p.film, s.film, -g.shear_increment, g.dt);
+    if (p.stone_stiffness > 0.0 && g.overlap > p.thickness)
+      s.stone -= p.stone_stiffness * g.shear_increment;
+    else
+      s.stone = 0.0;
+    return f + s.stone;
+  }
+  static void prepare(params_type& p, double dt) { burgers_prepare(p.film, dt); }
+  KOKKOS_INLINE_FUNCTION static double limit(const params_type&, state_type& s, double max_abs) {
+    const double film = clamp_magnitude(s.film.force, max_abs);
+    s.film.force = film;
+    s.stone = clamp_magnitude(s.stone, max_abs - (film < 0.0 ? -film : film));
+    return film + s.stone;
+  }
+  KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) {
+    return p.film.maxwell_stiffness + p.stone_stiffness;
+  }
+};
+
 // The rutting test's mastic law: Burger's with a bond, and a film where the
 // table gives it stones.
-using BurgersFilmBonded = Composite<FilmNormal, BurgersShear, ContactBond>;
+using BurgersFilmBonded = Composite<FilmNormal, FilmShear, ContactBond>;
 
-// A mastic law as a film law: with stone_stiffness 0 the same law.
+// A mastic law as a film law: with no stone stiffness the same law.
 inline BurgersFilmBonded::params_type film_params(const BurgersBonded::params_type& mastic, double thickness = 0.0,
-                                                  double stone_stiffness = 0.0) {
+                                                  double stone_stiffness = 0.0, double stone_shear_stiffness = 0.0) {
   BurgersFilmBonded::params_type p;
   p.normal.film = mastic.normal;
   p.normal.thickness = thickness;
   p.normal.stone_stiffness = stone_stiffness;
-  p.shear = mastic.shear;
+  p.shear.film = mastic.shear;
+  p.shear.thickness = thickness;
+  p.shear.stone_stiffness = stone_shear_stiffness;
   p.bond = mastic.bond;
   p.friction = mastic.friction;
   return p;

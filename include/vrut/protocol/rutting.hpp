@@ -83,13 +83,14 @@ struct RuttingMaterials {
   // gradation study (docs/validation.md); off by default.
   bool film_between_stones = false;
   // The film's thickness, as a fraction of the disk diameter. Where two
-  // stones' disks are neighbours, the stones' true outlines lie 0.41-0.44
-  // diameters apart on average (mixes 1-3; benchmarks/film_gaps.cpp): the
-  // mastic that the 1 mm disks cannot show. The film's Burger's law is the
-  // mastic's over that length (factor 1 / film_gap, as the mastic-aggregate
-  // factor 2 is the mastic over half a diameter), and the stones' linear
-  // spring bears once the overlap exceeds it.
-  double film_gap = 0.42;
+  // stones' disks (1 mm radius) are neighbours, the stones' true outlines lie
+  // 0.40 diameters apart on average in 2# (0.42 in 1#, 0.375 in 3#;
+  // benchmarks/film_gaps.cpp): mastic that the disks cannot show. The film's
+  // Burger's law is the mastic's over that length (factor 1 / film_gap, as
+  // the mastic-aggregate factor 2 is the mastic over half a diameter), and
+  // the stones' linear springs, normal and shear, bear once the overlap
+  // exceeds it.
+  double film_gap = 0.40;
   // The film never squeezes out: no stone spring (the study's first film).
   bool film_endless = false;
   double wall_friction = 0.0;           // mould walls and plate
@@ -164,7 +165,8 @@ inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, doub
     const auto mastic = mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0 / m.film_gap, stone_friction);
     film = RuttingLaw::make_first(m.film_endless ? film_params(mastic)
                                                  : film_params(mastic, m.film_gap * disk_diameter,
-                                                               stone_params.normal.stiffness));
+                                                               stone_params.normal.stiffness,
+                                                               stone_params.shear.stiffness));
   }
   for (int a = 1; a <= stone_colours; ++a) {
     table.set(mastic_group, a, mastic_stone);
