@@ -264,7 +264,7 @@ TEST_CASE("a film creeps as Burger's until it squeezes out, then the stones bear
 // held: while they touch, the stones' shear spring holds its force and only
 // the film's part relaxes, so the shear tends to k_s times the slip; apart,
 // the film alone relaxes it to nothing. Either way under the friction cap.
-TEST_CASE("stones that bear on each other hold a shear; a film alone lets it relax", "[burgers][physics]") {
+TEST_CASE("stones that bear on each other hold a shear, a film alone lets it relax", "[burgers][physics]") {
   using Law = vrut::BurgersFilmBonded;
   const double thickness = 1e-4, kn = 50.0 * spec_normal().maxwell_stiffness, ks = kn / 2.5;
   const Law::params_type p = vrut::film_params(
