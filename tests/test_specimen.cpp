@@ -4,6 +4,7 @@
 
 #include <vrut/specimen/colouring.hpp>
 #include <vrut/specimen/specimen.hpp>
+#include <vrut/specimen/stone_reach.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -370,4 +371,61 @@ TEST_CASE("stones closer than the margin get different colours", "[specimen][uni
     CHECK(clashes == 0);
     CHECK(colours > 1);
   }
+}
+
+namespace {
+vrut::Aggregate rectangle(double x0, double y0, double x1, double y1) {
+  vrut::Aggregate a;
+  a.polygon.vertices = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  a.area = a.polygon.area();
+  return a;
+}
+}  // namespace
+
+// A ray from inside to the outline, against distances worked out by hand:
+// along an axis, and along a diagonal to a slanted edge.
+TEST_CASE("the distance from inside a stone to its outline along a direction", "[specimen][unit]") {
+  const vrut::Polygon square = rectangle(0.0, 0.0, 4.0, 2.0).polygon;
+  CHECK(vrut::distance_to_outline(square, {1.0, 1.0}, {1.0, 0.0}) == Approx(3.0));
+  CHECK(vrut::distance_to_outline(square, {1.0, 1.0}, {-1.0, 0.0}) == Approx(1.0));
+  CHECK(vrut::distance_to_outline(square, {1.0, 1.0}, {0.0, 1.0}) == Approx(1.0));
+  // Triangle (0,0) (4,0) (0,4): from (1,1) along (1,1)/sqrt 2 the edge x + y = 4 lies sqrt 2 away.
+  vrut::Polygon triangle;
+  triangle.vertices = {{0.0, 0.0}, {4.0, 0.0}, {0.0, 4.0}};
+  CHECK(vrut::distance_to_outline(triangle, {1.0, 1.0}, Eigen::Vector2d(1.0, 1.0).normalized()) ==
+        Approx(std::sqrt(2.0)));
+}
+
+// Disks of radius 1 (diameter 2) on one row, by hand:
+//   0 (0,0) in stone A = [-10, 0.6], 1 (2,0) in stone B = [1.4, 10.5],
+//   2 (4,0) in B, 3 (12,0) mastic, 4 (14,0) in stone C = [13, 18.5],
+//   5 (16,0) in C, 6 (18,0) in C.
+// A and B meet between 0 and 1: their outlines lie 0.8 apart, 0.4 diameters;
+// 0's centre lies 0.6 inside A (0.3 diameters), 1's 0.6 inside B (0.3).
+// 2 has only its own stone and no neighbour at 6: deep inside, 1. 4 meets
+// only the mastic disk 3: 1 inside C towards it (0.5). 5 has only its own
+// stone around it (1); 6 looks out at nothing (1). 1 also meets 2 (its own
+// stone) and 3 is not its neighbour: only A counts for it.
+TEST_CASE("a stone disk's reach: how far its centre lies inside its stone, towards the stone it meets",
+          "[specimen][unit]") {
+  vrut::Placement placement;
+  placement.aggregates = {rectangle(-10.0, -1.0, 0.6, 1.0), rectangle(1.4, -1.0, 10.5, 1.0),
+                          rectangle(13.0, -1.0, 18.5, 1.0)};
+  vrut::DiskPacking disks;
+  disks.radius = 1.0;
+  disks.centers = {{0.0, 0.0}, {2.0, 0.0}, {4.0, 0.0}, {12.0, 0.0}, {14.0, 0.0}, {16.0, 0.0}, {18.0, 0.0}};
+  disks.aggregate = {0, 1, 1, -1, 2, 2, 2};
+  const std::vector<double> reach = vrut::stone_reach(disks, placement);
+  REQUIRE(reach.size() == 7);
+  CHECK(reach[0] == Approx(0.3));
+  CHECK(reach[1] == Approx(0.3));
+  CHECK(1.0 - reach[0] - reach[1] == Approx((1.4 - 0.6) / 2.0));  // the outlines' gap, in diameters
+  CHECK(reach[2] == 1.0);
+  CHECK(reach[3] == -1.0);
+  CHECK(reach[4] == Approx(0.5));
+  CHECK(reach[5] == 1.0);
+  CHECK(reach[6] == 1.0);
+  CHECK(vrut::reach_class(0.3, 5) == 1);
+  CHECK(vrut::reach_class(1.0, 5) == 4);
+  CHECK(vrut::reach_class_middle(1, 5) == Approx(0.3));
 }

@@ -13,6 +13,7 @@
 #include <vrut/material/burgers_parameters.hpp>
 #include <vrut/specimen/colouring.hpp>
 #include <vrut/specimen/specimen.hpp>
+#include <vrut/specimen/stone_reach.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -93,6 +94,12 @@ struct RuttingMaterials {
   double film_gap = 0.40;
   // The film never squeezes out: no stone spring (the study's first film).
   bool film_endless = false;
+  // Each pair of stones meets through its own film instead of film_gap's
+  // mean: one diameter less the reaches of its two disks, how far each
+  // centre lies inside its stone's outline towards the other stone
+  // (specimen/stone_reach.hpp), in film_reach_classes bins. Implies
+  // film_between_stones.
+  bool film_per_contact = false;
   double wall_friction = 0.0;           // mould walls and plate
 };
 
@@ -141,36 +148,84 @@ struct RuttingResult {
 
 using RuttingLaw = Choice<BurgersFilmBonded, LinearBonded>;
 
+// The film per contact sorts the stone disks' reaches into this many bins
+// of 0.2 diameters: its thickness is resolved to 0.2 diameters, about the
+// spread of the reach over the lines of one disk's neighbours.
+inline constexpr int film_reach_classes = 5;
+// Below half a bin the film is thinner than the bins resolve: its Burger's
+// element is taken over that length, and the stones' spring bears at once.
+inline constexpr double film_least_gap = 0.5 / film_reach_classes;
+
+// The contact table's group of a stone disk: each stone colour holds one
+// group per reach bin where the film is per contact, one otherwise.
+inline int stone_group(const RuttingMaterials& m, int colour, double reach) {
+  if (!m.film_per_contact) return aggregate_group + colour;
+  return aggregate_group + colour * film_reach_classes + reach_class(reach, film_reach_classes);
+}
+
+// Each disk's group in the contact table: the mastic's, or its stone's
+// (`colour`, one per aggregate, from colour_aggregates), and the bin of its
+// reach where the film is per contact.
+inline std::vector<int> rutting_groups(const Specimen& sp, const RuttingMaterials& m, const std::vector<int>& colour) {
+  const std::size_t n = sp.disks.centers.size();
+  const std::vector<double> reach = m.film_per_contact ? stone_reach(sp.disks, sp.placement) : std::vector<double>(n, 0.0);
+  std::vector<int> group(n, mastic_group);
+  for (std::size_t i = 0; i < n; ++i)
+    if (sp.disks.aggregate[i] >= 0) group[i] = stone_group(m, colour[sp.disks.aggregate[i]], reach[i]);
+  return group;
+}
+
 // Group 0 is the mastic; the aggregates are groups 1 .. stone_colours, one
 // per colour (specimen/colouring.hpp), so that the table can tell two stones
-// from one. With one colour that is the method's two-group table.
+// from one; with the film per contact, one per colour and reach bin
+// (stone_group). With one colour that is the method's two-group table.
 // disk_diameter (m) sizes the film between stones; only the film needs it.
 inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, double thickness, double shift,
                                                  int stone_colours = 1, double disk_diameter = 0.0) {
   const BurgersMacro reduced = m.mastic.shifted(TimeShift(shift));
   const MicroConversion conv = m.calibrated_conversion ? MicroConversion::calibrated(m.mastic_nu) : MicroConversion::seed();
   const double stone_friction = m.stone_friction < 0.0 ? m.friction : m.stone_friction;
-  AssignmentTable<RuttingLaw> table(1 + stone_colours);
+  const bool films = m.film_between_stones || m.film_per_contact;
+  const int bins = m.film_per_contact ? film_reach_classes : 1;
+  AssignmentTable<RuttingLaw> table(1 + stone_colours * bins);
   table.set(mastic_group, mastic_group,
             RuttingLaw::make_first(film_params(mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0, m.friction))));
   const auto mastic_stone = RuttingLaw::make_first(
       film_params(mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction)));
   const auto stone_params = aggregate_params(m.aggregate_modulus, thickness, m.aggregate_nu, stone_friction);
   const auto stone = RuttingLaw::make_second(stone_params);
-  RuttingLaw::params_type film{};
-  if (m.film_between_stones) {
-    if (!(m.film_gap > 0.0 && m.film_gap < 1.0))
+  if (films) {
+    if (!m.film_per_contact && !(m.film_gap > 0.0 && m.film_gap < 1.0))
       throw std::invalid_argument("the film between stones must be thinner than a disk and positive (film gap in (0, 1))");
+    if (m.film_per_contact && m.film_endless)
+      throw std::invalid_argument("a film per contact is sized by where the stones touch: it cannot be endless");
     if (!(disk_diameter > 0.0)) throw std::invalid_argument("the film between stones needs the disk diameter");
-    const auto mastic = mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0 / m.film_gap, stone_friction);
-    film = RuttingLaw::make_first(m.film_endless ? film_params(mastic)
-                                                 : film_params(mastic, m.film_gap * disk_diameter,
+  }
+  // A film `gap` diameters thick: the mastic's Burger's law over that length
+  // (per contact, never thinner than film_least_gap), the stones' springs
+  // beyond it.
+  auto film = [&](double gap) {
+    const double length = m.film_per_contact ? std::max(gap, film_least_gap) : gap;
+    const auto mastic = mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0 / length, stone_friction);
+    return RuttingLaw::make_first(m.film_endless ? film_params(mastic)
+                                                 : film_params(mastic, gap * disk_diameter,
                                                                stone_params.normal.stiffness,
                                                                stone_params.shear.stiffness));
-  }
-  for (int a = 1; a <= stone_colours; ++a) {
+  };
+  auto film_between_bins = [&](int p, int q) {
+    return film(std::max(0.0, 1.0 - reach_class_middle(p, bins) - reach_class_middle(q, bins)));
+  };
+  const auto mean_film = films && !m.film_per_contact ? film(m.film_gap) : RuttingLaw::params_type{};
+  for (int a = 1; a < table.groups(); ++a) {
     table.set(mastic_group, a, mastic_stone);
-    for (int b = a; b <= stone_colours; ++b) table.set(a, b, a == b || !m.film_between_stones ? stone : film);
+    const int colour_a = (a - 1) / bins, bin_a = (a - 1) % bins;
+    for (int b = a; b < table.groups(); ++b) {
+      const int colour_b = (b - 1) / bins, bin_b = (b - 1) % bins;
+      if (colour_a == colour_b || !films)
+        table.set(a, b, stone);
+      else
+        table.set(a, b, m.film_per_contact ? film_between_bins(bin_a, bin_b) : mean_film);
+    }
   }
   return table;
 }
@@ -308,7 +363,8 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   // group; the margin (two disk diameters) covers how far neighbours close in.
   std::vector<std::vector<int>> colours(count);
   int stone_colours = 1;
-  if (mat.film_between_stones)
+  const bool films = mat.film_between_stones || mat.film_per_contact;
+  if (films)
     for (int e = 0; e < count; ++e) {
       colours[e] = colour_aggregates(specimens[e].placement, 4.0 * specimens[e].disks.radius);
       for (int c : colours[e]) stone_colours = std::max(stone_colours, c + 1);
@@ -328,11 +384,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     const Specimen& sp = specimens[e];
     const int offset = static_cast<int>(all.size());
     ParticleSet set = to_particle_set(sp, mat.mastic_density, mat.aggregate_density);
-    if (mat.film_between_stones) {
-      const std::vector<int>& colour = colours[e];
-      for (std::size_t i = 0; i < set.size(); ++i)
-        if (sp.disks.aggregate[i] >= 0) set.group[i] = aggregate_group + colour[sp.disks.aggregate[i]];
-    }
+    if (films) set.group = rutting_groups(sp, mat, colours[e]);
     all.append_specimen(set);
     for (const auto& [i, j] : sp.disks.bonds) bonds.emplace_back(i + offset, j + offset);
   }
