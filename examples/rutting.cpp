@@ -196,8 +196,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->group("Materials");
   app.add_flag("--film-per-contact", mat.film_per_contact,
                "each pair of stones meets through its own film, sized from where its disks lie inside the stones' "
-               "outlines (implies --film-between-stones; --film-gap is then unused)")
-      ->excludes("--film-gap")->excludes("--film-endless")->group("Materials");
+               "outlines (implies --film-between-stones; --film-gap is then unused, --film-endless refused)")
+      ->group("Materials");  // no CLI excludes: config.ini holds every option, and reads back
   app.add_option("--wall-friction", mat.wall_friction, "mould and plate friction")->check(CLI::Range(0.0, 10.0))
       ->capture_default_str()->group("Materials");
   app.add_option("--pressure-mpa", o.pressure_mpa, "wheel contact pressure p")->capture_default_str()->group("Loading");
