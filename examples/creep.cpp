@@ -31,22 +31,23 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "host threads (0: OMP_NUM_THREADS)")->check(CLI::Range(0, 1024));
   app.add_option("--columns", cs.columns, "disks per row")->check(CLI::Range(2, 2000))->capture_default_str();
   app.add_option("--rows", cs.rows, "rows of disks")->check(CLI::Range(2, 2000))->capture_default_str();
-  app.add_option("--radius-mm", radius_mm, "disk radius, mm")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--thickness-mm", thickness_mm, "disk width t, mm")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--density", cs.density, "mastic density, kg/m^3")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--stress-mpa", stress_mpa, "plate stress sigma0, MPa")->check(CLI::PositiveNumber)
+  app.add_option("--radius-mm", radius_mm, "disk radius, mm")->check(cli::finite_positive())->capture_default_str();
+  app.add_option("--thickness-mm", thickness_mm, "disk width t, mm")->check(cli::finite_positive())->capture_default_str();
+  app.add_option("--density", cs.density, "mastic density, kg/m^3")->check(cli::finite_positive())->capture_default_str();
+  app.add_option("--stress-mpa", stress_mpa, "plate stress sigma0, MPa")->check(cli::finite_positive())
       ->capture_default_str();
   app.add_option("--time-s", cs.duration, "loading time, s (real; reduced by the shift factor)")
-      ->check(CLI::PositiveNumber)->capture_default_str();
+      ->check(cli::finite_positive())->capture_default_str();
   app.add_option("--shift", cs.shift, "time-temperature shift factor alpha_T")->capture_default_str();
-  app.add_option("--E1", e1, "Maxwell modulus, MPa")->capture_default_str();
-  app.add_option("--eta1", eta1, "Maxwell viscosity, MPa s")->capture_default_str();
-  app.add_option("--E2", e2, "Kelvin modulus, MPa")->capture_default_str();
-  app.add_option("--eta2", eta2, "Kelvin viscosity, MPa s")->capture_default_str();
-  app.add_option("--nu", cs.nu, "Poisson's ratio of the mastic, [0, 0.5)")->capture_default_str();
+  app.add_option("--E1", e1, "Maxwell modulus, MPa")->check(cli::finite_positive())->capture_default_str();
+  app.add_option("--eta1", eta1, "Maxwell viscosity, MPa s")->check(cli::finite_positive())->capture_default_str();
+  app.add_option("--E2", e2, "Kelvin modulus, MPa")->check(cli::finite_positive())->capture_default_str();
+  app.add_option("--eta2", eta2, "Kelvin viscosity, MPa s")->check(cli::finite_positive())->capture_default_str();
+  app.add_option("--nu", cs.nu, "Poisson's ratio of the mastic, [0, 0.5)")->check(cli::finite_range(0.0, 0.5, true))
+      ->capture_default_str();
   app.add_option("--conversion", conversion, "macro-to-micro rules: seed (method.md) or calibrated")
       ->check(CLI::IsMember({"seed", "calibrated"}))->capture_default_str();
-  app.add_option("--damping", cs.damping, "local damping coefficient")->check(CLI::Range(0.0, 0.99))
+  app.add_option("--damping", cs.damping, "local damping coefficient")->check(cli::finite_range(0.0, 0.99))
       ->capture_default_str();
   app.add_option("--points", cs.points, "samples written")->check(CLI::Range(2, 100000))->capture_default_str();
   app.add_option("--out", out, "output folder")->capture_default_str();

@@ -9,6 +9,7 @@
 #include <vrut/analysis/rutting_ensemble.hpp>
 #include <vrut/backend.hpp>
 #include <vrut/io/checkpoint.hpp>
+#include <vrut/io/memory_check.hpp>
 #include <vrut/io/output_dir.hpp>
 #include <vrut/io/plot.hpp>
 #include <vrut/io/progress.hpp>
@@ -162,28 +163,30 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   add_specimen_options(app, o.so);
   app.add_option("--seeds", o.seeds_text,
                  "an ensemble: specimens of these seeds, run side by side, e.g. 1-16 or 1,4,9 (instead of --seed)");
-  app.add_option("--E1", o.e1, "mastic Maxwell modulus at 60 C, MPa")->capture_default_str()->group("Materials");
-  app.add_option("--eta1", o.eta1, "mastic Maxwell viscosity, MPa s")->capture_default_str()->group("Materials");
-  app.add_option("--E2", o.e2, "mastic Kelvin modulus, MPa")->capture_default_str()->group("Materials");
-  app.add_option("--eta2", o.eta2, "mastic Kelvin viscosity, MPa s")->capture_default_str()->group("Materials");
-  app.add_option("--mastic-nu", mat.mastic_nu, "Poisson's ratio of the mastic")->capture_default_str()->group("Materials");
+  app.add_option("--E1", o.e1, "mastic Maxwell modulus at 60 C, MPa")->check(cli::finite_positive())->capture_default_str()->group("Materials");
+  app.add_option("--eta1", o.eta1, "mastic Maxwell viscosity, MPa s")->check(cli::finite_positive())->capture_default_str()->group("Materials");
+  app.add_option("--E2", o.e2, "mastic Kelvin modulus, MPa")->check(cli::finite_positive())->capture_default_str()->group("Materials");
+  app.add_option("--eta2", o.eta2, "mastic Kelvin viscosity, MPa s")->check(cli::finite_positive())->capture_default_str()->group("Materials");
+  app.add_option("--mastic-nu", mat.mastic_nu, "Poisson's ratio of the mastic")->check(cli::finite_range(0.0, 0.5, true))
+      ->capture_default_str()->group("Materials");
   app.add_option("--conversion", o.conversion, "micro parameters: seed (method.md rules) or calibrated (docs/burgers.md)")
       ->check(CLI::IsMember({"seed", "calibrated"}))->capture_default_str()->group("Materials");
   app.add_option("--mastic-aggregate-factor", mat.mastic_aggregate_factor,
                  "mastic-aggregate contacts get this times the mastic-mastic values")
-      ->check(CLI::PositiveNumber)->capture_default_str()->group("Materials");
-  app.add_option("--aggregate-modulus-gpa", o.aggregate_gpa, "aggregate Young's modulus")->check(CLI::PositiveNumber)
+      ->check(cli::finite_positive())->capture_default_str()->group("Materials");
+  app.add_option("--aggregate-modulus-gpa", o.aggregate_gpa, "aggregate Young's modulus")->check(cli::finite_positive())
       ->capture_default_str()->group("Materials");
-  app.add_option("--aggregate-nu", mat.aggregate_nu, "aggregate Poisson's ratio")->capture_default_str()->group("Materials");
-  app.add_option("--mastic-density", mat.mastic_density, "kg/m^3")->check(CLI::PositiveNumber)->capture_default_str()
+  app.add_option("--aggregate-nu", mat.aggregate_nu, "aggregate Poisson's ratio")->check(cli::finite_range(0.0, 0.5, true))
+      ->capture_default_str()->group("Materials");
+  app.add_option("--mastic-density", mat.mastic_density, "kg/m^3")->check(cli::finite_positive())->capture_default_str()
       ->group("Materials");
-  app.add_option("--aggregate-density", mat.aggregate_density, "kg/m^3")->check(CLI::PositiveNumber)
+  app.add_option("--aggregate-density", mat.aggregate_density, "kg/m^3")->check(cli::finite_positive())
       ->capture_default_str()->group("Materials");
-  app.add_option("--friction", mat.friction, "disk-disk friction where no bond holds")->check(CLI::Range(0.0, 10.0))
+  app.add_option("--friction", mat.friction, "disk-disk friction where no bond holds")->check(cli::finite_range(0.0, 10.0))
       ->capture_default_str()->group("Materials");
   app.add_option("--stone-friction", mat.stone_friction,
                  "aggregate-aggregate friction where no bond holds (-1: the same as --friction)")
-      ->check(CLI::Range(-1.0, 10.0))->capture_default_str()->group("Materials");
+      ->check(cli::finite_range(-1.0, 10.0))->capture_default_str()->group("Materials");
   app.add_flag("--film-between-stones", mat.film_between_stones,
                "two stones meet through a mastic film (Burger's, stone friction) that squeezes out to the "
                "stone law, not the rigid stone law alone")
@@ -191,26 +194,29 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--film-gap", mat.film_gap,
                  "the film's thickness, in disk diameters (0.40: the mean gap between two stones' outlines in 2# "
                  "where their disks are neighbours)")
-      ->check(CLI::Range(0.01, 0.99))->capture_default_str()->group("Materials");
+      ->check(cli::finite_range(0.01, 0.99))->capture_default_str()->group("Materials");
   app.add_flag("--film-endless", mat.film_endless, "the film never squeezes out: the stones never bear")
       ->group("Materials");
   app.add_flag("--film-per-contact", mat.film_per_contact,
                "each pair of stones meets through its own film, sized from where its disks lie inside the stones' "
                "outlines (implies --film-between-stones; --film-gap is then unused, --film-endless refused)")
       ->group("Materials");  // no CLI excludes: config.ini holds every option, and reads back
-  app.add_option("--wall-friction", mat.wall_friction, "mould and plate friction")->check(CLI::Range(0.0, 10.0))
+  app.add_option("--wall-friction", mat.wall_friction, "mould and plate friction")->check(cli::finite_range(0.0, 10.0))
       ->capture_default_str()->group("Materials");
-  app.add_option("--pressure-mpa", o.pressure_mpa, "wheel contact pressure p")->capture_default_str()->group("Loading");
-  app.add_option("--wheel-mass-kg", wt.wheel_mass, "wheel mass m")->capture_default_str()->group("Loading");
-  app.add_option("--wheel-width-mm", o.wheel_width_mm, "wheel width d (= disk thickness t)")->capture_default_str()
+  app.add_option("--pressure-mpa", o.pressure_mpa, "wheel contact pressure p")->check(cli::finite_positive())
+      ->capture_default_str()->group("Loading");
+  app.add_option("--wheel-mass-kg", wt.wheel_mass, "wheel mass m")->check(cli::finite_positive())->capture_default_str()->group("Loading");
+  app.add_option("--wheel-width-mm", o.wheel_width_mm, "wheel width d (= disk thickness t)")
+      ->check(cli::finite_positive())->capture_default_str()
       ->group("Loading");
-  app.add_option("--travel-mm", o.travel_mm, "wheel travel")->capture_default_str()->group("Loading");
-  app.add_option("--passes-per-minute", wt.passes_per_minute, "N")->capture_default_str()->group("Loading");
-  app.add_option("--minutes", wt.minutes, "test duration")->capture_default_str()->group("Loading");
+  app.add_option("--travel-mm", o.travel_mm, "wheel travel")->check(cli::finite_positive())->capture_default_str()->group("Loading");
+  app.add_option("--passes-per-minute", wt.passes_per_minute, "N")->check(cli::finite_positive())->capture_default_str()->group("Loading");
+  app.add_option("--minutes", wt.minutes, "test duration (more than the DS window's start, 45)")
+      ->check(cli::finite_positive())->capture_default_str()->group("Loading");
   app.add_option("--shift", num.shift, "time-temperature shift factor alpha_T")->capture_default_str()->group("Numerics");
   app.add_option("--timestep-safety", num.timestep_safety, "fraction of the critical time step")
-      ->check(CLI::Range(1e-3, 1.0))->capture_default_str()->group("Numerics");
-  app.add_option("--damping", num.damping, "local damping while loading")->check(CLI::Range(0.0, 0.99))
+      ->check(cli::finite_range(1e-3, 1.0))->capture_default_str()->group("Numerics");
+  app.add_option("--damping", num.damping, "local damping while loading")->check(cli::finite_range(0.0, 0.99))
       ->capture_default_str()->group("Numerics");
   app.add_option("--settle-steps", num.settle_steps, "steps of settling under gravity")
       ->check(CLI::Range(0L, 100000000L))->capture_default_str()->group("Numerics");
@@ -222,7 +228,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->capture_default_str()->group("Numerics");
   app.add_option("--checkpoint-every", o.checkpoint_every,
                  "write DIR/checkpoint.vrut every this many seconds (0: only on Ctrl-C); resume with --resume DIR")
-      ->check(CLI::Range(0.0, 1e9))->capture_default_str()->group("Runs");
+      ->check(cli::finite_range(0.0, 1e9))->capture_default_str()->group("Runs");
   app.add_option("--out", o.out, "output folder")->capture_default_str()->group("Runs");
   app.add_flag("--force", o.force, "overwrite an existing output folder")->group("Runs");
 }
@@ -323,6 +329,10 @@ int main(int argc, char** argv) {
     if (session.root()) output->write_text("config.ini", config_text);
     const auto [first_seed, last_seed] = ranks::block(seeds.size(), session.rank(), session.size());
     const std::vector<std::uint64_t> my_seeds(seeds.begin() + first_seed, seeds.begin() + last_seed);
+    // Measured: 1.7 kB a disk in the run (16k to 66k disks), and a checkpoint
+    // of 1.2 kB a disk is built in memory before it is written.
+    vrut::require_memory(my_seeds.size() * vrut::hex_disks_in(so.width_mm, so.height_mm, so.disk_radius_mm), 3072.0,
+                         64e6, my_seeds.size() > 1 ? "this ensemble" : "this run");
     std::vector<vrut::Specimen> specimens;
     for (std::uint64_t seed : my_seeds) {
       ss.seed = seed;
@@ -378,7 +388,8 @@ int main(int argc, char** argv) {
     const bool interrupted = runs.front().interrupted;
     // Rank 0 gathers every specimen's result, in the seeds' order.
     std::vector<ranks::SpecimenFacts> facts;
-    for (const auto& one : specimens) facts.push_back({one.placement.aggregates.size(), one.placement.achieved_fraction});
+    for (const auto& one : specimens)
+      facts.push_back({one.placement.aggregates.size(), one.placement.achieved_fraction, session.rank()});
     if (session.size() > 1) {
       nlohmann::json mine = nlohmann::json::array();
       for (std::size_t e = 0; e < runs.size(); ++e) mine.push_back(ranks::to_json(runs[e], facts[e]));
@@ -409,6 +420,7 @@ int main(int argc, char** argv) {
     // deformation.csv and .png: one specimen's curve, or the ensemble's mean,
     // interval and every specimen's curve.
     std::ostringstream csv;
+    csv.precision(17);  // every double as it is: files compared bit for bit (resume, MPI) must differ where the runs do
     csv << "minutes,reduced_time_s,deformation_mm,plate_pressure_mpa";
     if (ensemble) {
       csv << ",sd_mm,ci95_low_mm,ci95_high_mm";
@@ -465,6 +477,7 @@ int main(int argc, char** argv) {
 
     if (ensemble) {
       std::ostringstream per_seed;
+      per_seed.precision(17);
       per_seed << "seed,disks,aggregates,aggregate_area_fraction,rut_depth_mm,deformation_45min_mm,"
                   "deformation_60min_mm,dynamic_stability_passes_per_mm,dynamic_stability_is_lower_bound,"
                   "deformation_resolution_mm\n";
@@ -526,7 +539,8 @@ int main(int argc, char** argv) {
                        {"rut_depth_mm", runs[k].deformation_final * 1e3},
                        {"deformation_45min_mm", runs[k].deformation_at_ds_start * 1e3},
                        {"dynamic_stability_passes_per_mm", runs[k].dynamic_stability},
-                       {"dynamic_stability_is_lower_bound", runs[k].dynamic_stability_is_lower_bound}});
+                       {"dynamic_stability_is_lower_bound", runs[k].dynamic_stability_is_lower_bound},
+                       {"rank", facts[k].rank}});  // the MPI rank that ran it
       e["per_seed"] = per;
       j["ensemble"] = e;
     }

@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Builds vrut and runs the whole test suite (sets up what is missing first).
 #   BUILD_DIR   build folder (default: build)
-#   CTEST_ARGS  extra arguments for ctest, e.g. "-L physics" or "-LE slow"
+#   CTEST_ARGS  extra arguments for ctest, e.g. "-L physics" or "-LE cuda|fuzz|sanitize"
+# Every test has one label: physics, unit, protocol (the Catch2 tests, by
+# their tags), examples (the command-line programs), build (headers, law
+# concept, package, C++20), cuda, fuzz, sanitize. "ctest --print-labels" lists them.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 kokkos=$("$here/scripts/setup.sh" | tail -n 1)

@@ -30,6 +30,7 @@ same_results() {  # same_results DIR_A DIR_B
   for f in deformation.csv final.vtk; do
     cmp -s "$1/$f" "$2/$f" || { fail "$f of $2 differs from that of $1"; return; }
   done
+  if [[ -e $1/seeds.csv ]]; then cmp -s "$1/seeds.csv" "$2/seeds.csv" || { fail "seeds.csv of $2 differs"; return; }; fi
   diff <(grep -vE '"(wall_seconds|particle_steps_per_second|threads)"' "$1/summary.json") \
        <(grep -vE '"(wall_seconds|particle_steps_per_second|threads)"' "$2/summary.json") >/dev/null ||
     { fail "summary.json of $2 differs from that of $1"; return; }
@@ -51,6 +52,20 @@ wait "$pid" 2>/dev/null
 grep -q "resuming from" resumed.out || fail "the resumed run does not say it resumes"
 same_results whole killed
 [[ -e killed/checkpoint.vrut ]] && fail "a finished run left its checkpoint behind"
+
+# An ensemble killed the same way resumes every specimen: the same curves,
+# per-seed table and statistics as the ensemble never stopped.
+"$exe" "${small[@]}" --seeds 1-2 --out ensemble >ensemble.out 2>&1 || fail "the whole ensemble failed: $(tail -n 3 ensemble.out)"
+"$exe" "${small[@]}" --seeds 1-2 --checkpoint-every 1 --out ensemble_killed >ensemble_killed.out 2>&1 &
+pid=$!
+wait_for ensemble_killed/checkpoint.vrut || fail "no ensemble checkpoint within 60 s"
+sleep 0.5
+kill -KILL "$pid"
+wait "$pid" 2>/dev/null
+[[ -s ensemble_killed/checkpoint.vrut && ! -e ensemble_killed/summary.json ]] || fail "after SIGKILL: $(ls ensemble_killed)"
+"$exe" --resume ensemble_killed >ensemble_resumed.out 2>&1 || fail "--resume of the ensemble failed: $(tail -n 3 ensemble_resumed.out)"
+grep -q '"specimens": 2' ensemble_killed/summary.json 2>/dev/null || fail "the resumed ensemble has not 2 specimens"
+same_results ensemble ensemble_killed
 
 # Ctrl-C: partial results and a checkpoint, and how to go on.
 "$exe" "${small[@]}" --out stopped >stopped.out 2>stopped.err &

@@ -2,17 +2,23 @@
 # Bad input to an example gets a clear message and exit code 1 or 2, never a
 # crash or a hang; --help exits 0.  Usage: cli_errors.sh demo|creep|specimen|rutting EXECUTABLE
 # VRUT_ERRORS_ONLY=1 leaves out the rutting runs that succeed (for slow builds).
+# Under the sanitizers (sanitize.sh sets VRUT_SANITIZED=1 and exit code 86
+# for a report) any report fails the case, whatever the exit code.
 set -u
 which=$1 exe=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 failures=0
+sanitizer_report="ERROR: (Address|Leak)Sanitizer|runtime error:|SUMMARY: (Address|UndefinedBehavior)Sanitizer"
 
 expect() {  # expect CODES PATTERN -- ARGS...
   local codes=$1 pattern=$2; shift 3
   local out code
   out=$(cd "$work" && timeout 60 "$exe" "$@" 2>&1); code=$?
-  if [[ " $codes " != *" $code "* ]] || ! grep -qiE -- "$pattern" <<<"$out"; then
+  if [[ -n ${VRUT_SANITIZED:-} ]] && { [[ $code -eq 86 ]] || grep -qE "$sanitizer_report" <<<"$out"; }; then
+    echo "FAIL: $* -> exit $code, a sanitizer report:"; grep -E -A 20 "$sanitizer_report" <<<"$out" | head -n 40
+    failures=$((failures + 1))
+  elif [[ " $codes " != *" $code "* ]] || ! grep -qiE -- "$pattern" <<<"$out"; then
     echo "FAIL: $* -> exit $code (want $codes), output:"; echo "$out" | head -n 5
     failures=$((failures + 1))
   else
@@ -42,11 +48,14 @@ creep)
   expect "1 2" "eta1" -- --eta1 -5 --out a
   expect "1 2" "eta2" -- --eta2 0 --out b
   expect "1 2" "E1" -- --E1 0 --out c
-  expect "1 2" "Poisson" -- --nu 0.5 --out d
-  expect "1 2" "Poisson" -- --nu -0.1 --out e
+  expect "1 2" "--nu: .*0.5" -- --nu 0.5 --out d
+  expect "1 2" "--nu: .*0.5" -- --nu -0.1 --out e
   expect "1 2" "alpha_T" -- --shift 0 --out f
   expect "1 2" "alpha_T" -- --shift -1e4 --out g
-  for d in a b c d e f g; do
+  expect "2" "--E1" -- --E1 nan --out h
+  expect "2" "--eta2" -- --eta2 inf --out i
+  expect "2" "--nu" -- --nu nan --out j
+  for d in a b c d e f g h i j; do
     [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
   done
   expect "0" "apparent/macro" -- --out taken --force --stress-mpa 0.01 --time-s 20 --columns 6 --rows 4
@@ -62,7 +71,14 @@ specimen)
   expect "1 2" "air-voids" -- --air-voids 0.5 --out d
   expect "1 2" "height" -- --height-mm -50 --out e
   expect "1 2" "cannot reach" -- --gradation 3 --height-mm 5 --out f
-  for d in a b c d e f; do
+  printf '19,100\n' >"$work/one_sieve.csv"
+  printf 'sieve_mm,percent_passing\n' >"$work/header_only.csv"
+  printf 'sieve_mm,percent_passing\n19,100\n4.75,100\n2.36,100\n0.075,6\n' >"$work/no_stones.csv"
+  expect "2" "at least two sieves" -- --gradation one_sieve.csv --out g
+  expect "2" "no sieve lines" -- --gradation header_only.csv --out h
+  expect "2" "retains nothing on the 2.36" -- --gradation no_stones.csv --out i
+  expect "2" "GiB of memory.*available" -- --width-mm 10000 --height-mm 10000 --disk-radius-mm 0.05 --out j
+  for d in a b c d e f g h i j; do
     [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
   done
   expect "0" "area fraction" -- --gradation 3 --seed 5 --out one
@@ -81,12 +97,31 @@ rutting)
   expect "1 2" "no_such_key" -- --config extra.ini --out d
   printf 'seed=abc\n' >"$work/badvalue.ini"
   expect "1 2" "seed" -- --config badvalue.ini --out e
-  expect "1 2" "Poisson" -- --mastic-nu 0.6 --out f
+  expect "1 2" "--mastic-nu: .*0.5" -- --mastic-nu 0.6 --out f
   expect "1 2" "alpha_T" -- --shift 0 --out g
   expect "1" "unstable at step [0-9]+.*time step" -- "${small[@]}" --timestep-safety 1.0 --out h
   for d in a b c d e f g h; do
     [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
   done
+  # Negative, zero, NaN and infinite values: exit 2, the option named, no folder.
+  for option in --E1 --eta1 --E2 --eta2 --aggregate-modulus-gpa --wheel-mass-kg --travel-mm --passes-per-minute \
+                --minutes; do
+    for value in -1 0 nan inf; do expect "2" "^$option: " -- "$option" "$value" --out bad; done
+  done
+  for option in --aggregate-nu --mastic-nu; do
+    for value in -0.1 0.5 nan inf; do expect "2" "^$option: " -- "$option" "$value" --out bad; done
+  done
+  expect "2" "must last longer than minute 45" -- --minutes 30 --out bad
+  printf 'sieve_mm,percent_passing\n19,100\n4.75,100\n2.36,100\n0.075,6\n' >"$work/no_stones.csv"
+  printf '19,100\n' >"$work/one_sieve.csv"
+  printf 'sieve_mm,percent_passing\n' >"$work/header_only.csv"
+  expect "2" "retains nothing on the 2.36" -- --gradation no_stones.csv --out bad
+  expect "2" "at least two sieves" -- --gradation one_sieve.csv --out bad
+  expect "2" "no sieve lines" -- --gradation header_only.csv --out bad
+  # Work that cannot fit in memory is refused before it starts, with the estimate.
+  expect "2" "needs about [0-9.e+]+ GiB of memory.*available" -- --width-mm 10000 --height-mm 10000 \
+    --disk-radius-mm 0.05 --out bad
+  [[ -e "$work/bad" ]] && { echo "FAIL: output folder bad written after an error"; failures=$((failures + 1)); }
   # The runs that succeed, which the sanitizer build (VRUT_ERRORS_ONLY) leaves out: too slow there.
   if [[ -z ${VRUT_ERRORS_ONLY:-} ]]; then
   expect "0" "rut depth" -- "${small[@]}" --out run1
@@ -102,6 +137,51 @@ rutting)
   expect "0" "rut depth" -- --config run1/config.ini --out run2
   cmp -s "$work/run1/deformation.csv" "$work/run2/deformation.csv" ||
     { echo "FAIL: the written config.ini does not reproduce the run"; failures=$((failures + 1)); }
+  # The options of the study and the calibrated conversion run end to end, and
+  # each softens the model where it should: a film between stones is softer
+  # than the rigid stone contact at every overlap, an endless film softer
+  # still, and the calibrated micro parameters are 0.74 of the seed rules'
+  # (docs/burgers.md), so each ruts more than the frozen model (run1).
+  rut_of() { grep -o '"rut_depth_mm": [-0-9.e+]*' "$work/$1/summary.json" | head -n 1 | awk '{ print $2 }'; }
+  deeper() {  # deeper A B: A ruts more than B
+    if awk -v a="$(rut_of "$1")" -v b="$(rut_of "$2")" 'BEGIN { exit !(a > b) }'; then
+      echo "ok:   $1 ruts $(rut_of "$1") mm, more than $2's $(rut_of "$2") mm"
+    else echo "FAIL: $1 ruts $(rut_of "$1") mm, not more than $2's $(rut_of "$2") mm"; failures=$((failures + 1)); fi
+  }
+  expect "0" "rut depth" -- "${small[@]}" --film-between-stones --out film
+  expect "0" "rut depth" -- "${small[@]}" --film-between-stones --film-endless --out endless
+  expect "0" "rut depth" -- "${small[@]}" --film-per-contact --out per_contact
+  expect "0" "rut depth" -- "${small[@]}" --conversion calibrated --out calibrated
+  deeper film run1
+  deeper endless film
+  deeper per_contact run1
+  deeper calibrated run1
+  grep -q '"conversion": "calibrated"' "$work/calibrated/summary.json" ||
+    { echo "FAIL: summary.json does not say the conversion was calibrated"; failures=$((failures + 1)); }
+  grep -qx 'film-per-contact=true' "$work/per_contact/config.ini" ||
+    { echo "FAIL: config.ini lacks film-per-contact=true"; failures=$((failures + 1)); }
+  # A DS past what the curve resolves (a mastic 1,200 times as viscous: the
+  # plate hardly moves after minute 45) is a lower bound: "above N" in the
+  # printout, a flag in summary.json and seeds.csv, and N = the passes of the
+  # window (15 min x 42) over the resolution.
+  stiff=(--eta1 1e5 --eta2 1e5 --E2 100)
+  expect "0" "dynamic stability above [0-9]+ passes/mm" -- "${small[@]}" "${stiff[@]}" --out bound
+  grep -q '"dynamic_stability_is_lower_bound": true' "$work/bound/summary.json" ||
+    { echo "FAIL: summary.json does not flag the DS as a lower bound"; failures=$((failures + 1)); }
+  ds_of_resolution() {  # the DS and the resolution of one summary.json, and whether DS = 630 / resolution
+    awk -F': ' '/"dynamic_stability_passes_per_mm"/ { ds = $2 + 0 } /"deformation_resolution_mm"/ { res = $2 + 0 }
+                END { printf "%s %s ", ds, res; exit !(res > 0 && ds > 0 && (ds * res / 630 - 1) ^ 2 < 1e-18) }' "$1"
+  }
+  if line=$(ds_of_resolution "$work/bound/summary.json"); then echo "ok:   DS above $line (resolution mm) = 630 / resolution"
+  else echo "FAIL: the DS lower bound is not 630 over the resolution: $line"; failures=$((failures + 1)); fi
+  expect "0" "dynamic stability: mean above .* are lower bounds \(seeds.csv\)" -- "${small[@]}" "${stiff[@]}" --seeds 1-2 \
+    --out bounds
+  if awk -F, 'NR > 1 { n++; if ($9 != 1 || $8 * $10 / 630 - 1 > 1e-9 || $8 * $10 / 630 - 1 < -1e-9) bad++ }
+              END { exit !(n == 2 && bad == 0) }' "$work/bounds/seeds.csv"; then
+    echo "ok:   seeds.csv flags both DS as lower bounds, each 630 / its resolution"
+  else echo "FAIL: seeds.csv: $(cat "$work/bounds/seeds.csv")"; failures=$((failures + 1)); fi
+  [[ $(grep -c '"dynamic_stability_is_lower_bound": true' "$work/bounds/summary.json") -ge 2 ]] ||
+    { echo "FAIL: summary.json's per-seed entries do not flag the lower bounds"; failures=$((failures + 1)); }
   # Ctrl-C: the run stops at its next sample, writes the results so far, says
   # so and exits 130 (128 + SIGINT). A test of 10 times the usual length, so
   # that the signal comes while it loads.

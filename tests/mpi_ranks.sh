@@ -2,10 +2,13 @@
 # mpirun -np 2 vrut-rutting --seeds 1-3 shares the seeds between two ranks
 # (two on rank 0, one on rank 1) and gathers one summary: the same curves,
 # per-seed table and statistics as one process running all three.
-# Skipped (77) without mpirun or in a build without MPI.
-# Usage: mpi_ranks.sh VRUT_RUTTING
+# Skipped (77) only where the tool is missing: no mpirun, or vrut-rutting
+# built without MPI (the build says which: with-mpi or without-mpi). Anything
+# else that goes wrong fails.
+# Usage: mpi_ranks.sh VRUT_RUTTING with-mpi|without-mpi
 set -u
-exe=$1
+exe=$1 built=$2
+[[ $built == with-mpi ]] || { echo "skipped: vrut-rutting was built without MPI (apt-get install libopenmpi-dev)"; exit 77; }
 command -v mpirun >/dev/null || { echo "skipped: no mpirun (apt-get install openmpi-bin)"; exit 77; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -16,12 +19,16 @@ small=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-step
 OMP_NUM_THREADS=2 "$exe" "${small[@]}" --out one >one.out 2>&1 || { echo "FAIL: one process: $(tail -n 3 one.out)"; exit 1; }
 mpirun -np 2 -x OMP_NUM_THREADS=1 -x OMP_PROC_BIND "$exe" "${small[@]}" --out two >two.out 2>&1 ||
   { echo "FAIL: two ranks: $(tail -n 5 two.out)"; exit 1; }
-grep -q '"mpi_ranks": 2' two/summary.json || { echo "skipped: vrut-rutting was built without MPI"; exit 77; }
 failures=0
+grep -q '"mpi_ranks": 2' two/summary.json || { echo "FAIL: a build with MPI ran as one rank: $(grep mpi_ranks two/summary.json)"; exit 1; }
+# The seeds were really shared: each per-seed entry names the rank that ran it.
+ranks=$(grep -o '"rank": [0-9]*' two/summary.json | tr -dc '0-9\n' | paste -sd,)
+if [[ $ranks == "0,0,1" ]]; then echo "ok:   seeds 1 and 2 ran on rank 0, seed 3 on rank 1"; else
+  echo "FAIL: the seeds ran on ranks $ranks, not 0,0,1"; failures=$((failures + 1)); fi
 for f in deformation.csv seeds.csv; do
   if cmp -s "one/$f" "two/$f"; then echo "ok:   $f the same"; else echo "FAIL: $f differs"; failures=$((failures + 1)); fi
 done
-strip() { grep -vE '"(wall_seconds|particle_steps_per_second|threads|mpi_ranks)"' "$1"; }
+strip() { grep -vE '"(wall_seconds|particle_steps_per_second|threads|mpi_ranks|rank)"' "$1"; }
 if diff <(strip one/summary.json) <(strip two/summary.json); then echo "ok:   summary.json the same"; else
   echo "FAIL: summary.json differs"; failures=$((failures + 1)); fi
 exit $((failures > 0))

@@ -1,6 +1,8 @@
 // Checkpoints: a rutting run stopped and resumed from its checkpoint ends
 // exactly where the run never stopped ends; a checkpoint that is damaged, from
 // another version or of another run is refused, saying which.
+#include "rutting_checks.hpp"
+#include "scratch.hpp"
 #include "spaces.hpp"
 
 #include <vrut/io/checkpoint.hpp>
@@ -48,40 +50,14 @@ vrut::RuttingResult run_short(const std::function<bool()>& stop, vrut::Checkpoin
   return vrut::run_rutting<Space>(small_specimen(), short_test(), {}, short_numerics(), {}, {}, stop, checkpoints);
 }
 
-std::filesystem::path scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "vrut-test-checkpoint";
-  std::filesystem::create_directories(dir);
-  return dir / name;
-}
-
-// Every number a run reports, compared bit for bit.
-void require_same(const vrut::RuttingResult& a, const vrut::RuttingResult& b) {
-  REQUIRE(a.samples.size() == b.samples.size());
-  for (std::size_t k = 0; k < a.samples.size(); ++k) {
-    REQUIRE(a.samples[k].deformation == b.samples[k].deformation);
-    REQUIRE(a.samples[k].plate_pressure == b.samples[k].plate_pressure);
-    REQUIRE(a.samples[k].minutes == b.samples[k].minutes);
-  }
-  REQUIRE(a.snapshots.size() == b.snapshots.size());
-  for (std::size_t k = 0; k < a.snapshots.size(); ++k) {
-    REQUIRE(a.snapshots[k].x == b.snapshots[k].x);
-    REQUIRE(a.snapshots[k].dy == b.snapshots[k].dy);
-  }
-  REQUIRE(a.vx == b.vx);
-  REQUIRE(a.vy == b.vy);
-  REQUIRE(a.steps == b.steps);
-  REQUIRE(a.contacts == b.contacts);
-  REQUIRE(a.plate_y_final == b.plate_y_final);
-  REQUIRE(a.dynamic_stability == b.dynamic_stability);
-}
-
 }  // namespace
 
 TEMPLATE_LIST_TEST_CASE("a run stopped with a checkpoint and resumed ends bit for bit as the run never stopped",
                         "[checkpoint]", vrut_test::ExecutionSpaces) {
   const auto whole = run_short<TestType>({}, nullptr);
 
-  const auto path = scratch("stopped.vrut");
+  const vrut_test::ScratchDir scratch("vrut-test-checkpoint");
+  const auto path = scratch / "stopped.vrut";
   vrut::CheckpointFile first(path, 0.0, {{"run", "stopped at sample 7"}});
   int asked = 0;
   const auto part = run_short<TestType>([&] { return ++asked == 7; }, &first);
@@ -92,12 +68,12 @@ TEMPLATE_LIST_TEST_CASE("a run stopped with a checkpoint and resumed ends bit fo
   CHECK(again.header().at("run") == "stopped at sample 7");
   const auto resumed = run_short<TestType>({}, &again);
   CHECK_FALSE(resumed.interrupted);
-  require_same(resumed, whole);
-  CHECK(resumed.bonds == whole.bonds);
+  vrut_test::require_same(resumed, whole);
 }
 
 TEST_CASE("checkpoints written by the clock resume, on another backend too", "[checkpoint]") {
-  const auto path = scratch("clock.vrut");
+  const vrut_test::ScratchDir scratch("vrut-test-checkpoint");
+  const auto path = scratch / "clock.vrut";
   // Due at every sample but the last, or every one where the last falls a
   // step before the end: the file left holds the last sample before the end.
   vrut::CheckpointFile clock(path, 1e-9, {});
@@ -108,11 +84,12 @@ TEST_CASE("checkpoints written by the clock resume, on another backend too", "[c
   auto again = vrut::CheckpointFile::resume(path, 0.0);
   // Every sum runs in a fixed order, so the backends agree bit for bit.
   const auto resumed = run_short<Kokkos::Serial>({}, &again);
-  require_same(resumed, whole);
+  vrut_test::require_same(resumed, whole);
 }
 
 TEST_CASE("a checkpoint that is damaged, from another version or of another run is refused", "[checkpoint]") {
-  const auto path = scratch("good.vrut");
+  const vrut_test::ScratchDir scratch("vrut-test-checkpoint");
+  const auto path = scratch / "good.vrut";
   {
     vrut::CheckpointFile file(path, 0.0, {});
     int asked = 0;
@@ -124,22 +101,22 @@ TEST_CASE("a checkpoint that is damaged, from another version or of another run 
     std::ofstream(p, std::ios::binary | std::ios::trunc) << bytes;
   };
 
-  const auto truncated = scratch("truncated.vrut");
+  const auto truncated = (scratch / "truncated.vrut");
   write(truncated, good.substr(0, good.size() / 2));
   CHECK_THROWS_WITH(vrut::read_checkpoint(truncated), Catch::Contains("is damaged"));
 
-  const auto flipped = scratch("flipped.vrut");
+  const auto flipped = (scratch / "flipped.vrut");
   std::string bad = good;
   bad[bad.size() - 100] ^= 0x10;
   write(flipped, bad);
   CHECK_THROWS_WITH(vrut::read_checkpoint(flipped), Catch::Contains("checksum"));
 
-  const auto other = scratch("other.txt");
+  const auto other = (scratch / "other.txt");
   write(other, "gradation=2\n");
   CHECK_THROWS_WITH(vrut::read_checkpoint(other), Catch::Contains("not a vrut checkpoint"));
-  CHECK_THROWS_WITH(vrut::read_checkpoint(scratch("missing.vrut")), Catch::Contains("cannot open"));
+  CHECK_THROWS_WITH(vrut::read_checkpoint((scratch / "missing.vrut")), Catch::Contains("cannot open"));
 
-  const auto old = scratch("old.vrut");
+  const auto old = (scratch / "old.vrut");
   const vrut::Checkpoint c = vrut::read_checkpoint(path);
   vrut::write_checkpoint(old, c.header, c.state, "0.0.9");
   CHECK_THROWS_WITH(vrut::read_checkpoint(old), Catch::Contains("written by vrut 0.0.9"));
@@ -156,7 +133,8 @@ TEST_CASE("a checkpoint that cannot be written whole leaves the previous one", "
     WARN("no /dev/full, which stands for a full disk here: not tested");
     return;
   }
-  const auto path = scratch("full.vrut");
+  const vrut_test::ScratchDir scratch("vrut-test-checkpoint");
+  const auto path = scratch / "full.vrut";
   const nlohmann::json state = {{"item", 1}};
   vrut::write_checkpoint(path, {{"which", "previous"}}, state);
   // The next write goes aside to path.writing, here a disk that is full.

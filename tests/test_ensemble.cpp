@@ -131,11 +131,19 @@ TEST_CASE("a wall of one specimen does not touch the disks of another", "[core][
   Simulation<Linear, Kokkos::DefaultHostExecutionSpace> sim(all, table, settings, {0.0});
   REQUIRE(sim.specimens() == 2);
   sim.add_wall(Wall{{-1.0, 0.0}, {1.0, 0.0}, {}}, linear_params(1e5, 0.0, 0.0), {}, 0);
-  sim.run(20000, 1e-5);  // 0.2 s: free fall would cover 0.196 m
+  const long n = 20000;
+  const double dt = 1e-5;
+  sim.run(n, dt);  // 0.2 s: free fall would cover 0.196 m
   auto x = vrut_test::to_host(sim.particles().position);
   CHECK(x(0).y > 0.0);      // held by the floor (an elastic bounce never rises above the start)
   CHECK(x(0).y < 0.0011);
-  CHECK(x(1).y == Approx(0.001 - 0.5 * 9.81 * 0.2 * 0.2).epsilon(1e-3));  // free fall, to the leapfrog's dt/t
+  // Free fall from rest under the leapfrog (velocities at half steps, the
+  // first half step from v = 0): x_n = x_0 - g dt^2 n (n + 1) / 2, which is
+  // the exact 0.5 g t^2 made longer by dt / t = 5e-5. To rounding (n steps
+  // of 1e-16 relative each), and 5e-5 from the exact fall.
+  const double leapfrog = 0.001 - 9.81 * dt * dt * n * (n + 1) / 2.0, exact = 0.001 - 0.5 * 9.81 * 0.2 * 0.2;
+  CHECK(x(1).y == Approx(leapfrog).epsilon(1e-10));
+  CHECK((x(1).y - 0.001) / (exact - 0.001) - 1.0 == Approx(dt / 0.2).epsilon(1e-6));
   CHECK(sim.active_contacts() == 0);  // the two coincident disks are not a contact
   CHECK_THROWS_WITH(sim.add_wall(Wall{{-1.0, 0.0}, {1.0, 0.0}, {}}, linear_params(1e5, 0.0, 0.0), {}, 2),
                     Catch::Contains("specimen 2"));

@@ -2,11 +2,40 @@
 // What every vrut example does with its command line and its errors.
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <exception>
 #include <iostream>
 #include <stdexcept>
 
 namespace cli {
+
+// CLI11's PositiveNumber and Range let NaN through (every comparison with it
+// is false), and PositiveNumber infinity too: these refuse both. CLI11 puts
+// the option's name before the message, and the command exits 2.
+inline CLI::Validator finite_positive() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double v = 0.0;
+        if (!CLI::detail::lexical_cast(text, v)) return "not a number: '" + text + "'";
+        if (!std::isfinite(v) || !(v > 0.0)) return "must be a finite positive number, got " + text;
+        return {};
+      },
+      "POSITIVE");
+}
+
+// A finite number in [lo, hi], or in [lo, hi) where `open_above`.
+inline CLI::Validator finite_range(double lo, double hi, bool open_above = false) {
+  const std::string range = "[" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + (open_above ? ")" : "]");
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double v = 0.0;
+        if (!CLI::detail::lexical_cast(text, v)) return "not a number: '" + text + "'";
+        if (!std::isfinite(v) || v < lo || v > hi || (open_above && v == hi))
+          return "must be a finite number in " + range + ", got " + text;
+        return {};
+      },
+      "FLOAT in " + range);
+}
 
 // Parses; returns -1 to go on, else the exit code: 0 after --help, 2 for a
 // malformed command line (CLI11's own codes are not 1 or 2).

@@ -104,10 +104,11 @@ inline std::string checkpoint_name(int rank, int size) {
 
 // What rank 0 needs of a specimen run elsewhere: its result less the
 // per-disk fields (pictures are of the first specimen, which rank 0 runs),
-// and two facts of the specimen for seeds.csv.
+// two facts of the specimen for seeds.csv, and the rank that ran it.
 struct SpecimenFacts {
   std::size_t aggregates = 0;
   double aggregate_area_fraction = 0.0;
+  int rank = 0;
 };
 
 inline nlohmann::json to_json(const vrut::RuttingResult& r, const SpecimenFacts& f) {
@@ -122,7 +123,7 @@ inline nlohmann::json to_json(const vrut::RuttingResult& r, const SpecimenFacts&
           {"plate", {r.plate_x0, r.plate_x1, r.plate_y_final}},
           {"particles", r.particles}, {"contacts", r.contacts}, {"bonds", r.bonds},
           {"interrupted", r.interrupted}, {"steps", r.steps}, {"dt", r.dt}, {"wall_seconds", r.wall_seconds},
-          {"aggregates", f.aggregates}, {"aggregate_area_fraction", f.aggregate_area_fraction}};
+          {"aggregates", f.aggregates}, {"aggregate_area_fraction", f.aggregate_area_fraction}, {"rank", f.rank}};
 }
 
 inline std::pair<vrut::RuttingResult, SpecimenFacts> from_json(const nlohmann::json& j) {
@@ -138,7 +139,7 @@ inline std::pair<vrut::RuttingResult, SpecimenFacts> from_json(const nlohmann::j
   r.plate_x0 = j.at("plate")[0], r.plate_x1 = j.at("plate")[1], r.plate_y_final = j.at("plate")[2];
   r.particles = j.at("particles"), r.contacts = j.at("contacts"), r.bonds = j.at("bonds");
   r.interrupted = j.at("interrupted"), r.steps = j.at("steps"), r.dt = j.at("dt"), r.wall_seconds = j.at("wall_seconds");
-  return {r, {j.at("aggregates"), j.at("aggregate_area_fraction")}};
+  return {r, {j.at("aggregates"), j.at("aggregate_area_fraction"), j.at("rank")}};
 }
 
 }  // namespace ranks

@@ -1,6 +1,8 @@
 #pragma once
 // Command-line options, summary and VTK output of a digital specimen, shared
 // by vrut-specimen and vrut-rutting.
+#include "cli.hpp"
+
 #include <vrut/io/vtk.hpp>
 #include <vrut/specimen/specimen.hpp>
 
@@ -28,26 +30,26 @@ inline void add_specimen_options(CLI::App& app, SpecimenOptions& o) {
   app.add_option("--gradation", o.gradation, "1, 2, 3 (docs/method.md section 2) or a CSV file sieve_mm,percent_passing")
       ->capture_default_str();
   app.add_option("--seed", o.seed, "random seed")->capture_default_str();
-  app.add_option("--width-mm", o.width_mm, "section width")->check(CLI::Range(1.0, 1e4))->capture_default_str();
-  app.add_option("--height-mm", o.height_mm, "section height")->check(CLI::Range(1.0, 1e4))->capture_default_str();
+  app.add_option("--width-mm", o.width_mm, "section width")->check(cli::finite_range(1.0, 1e4))->capture_default_str();
+  app.add_option("--height-mm", o.height_mm, "section height")->check(cli::finite_range(1.0, 1e4))->capture_default_str();
   app.add_option("--radius-fluctuation", o.radius_fluctuation, "polygon radius fluctuation R/R0, [0, 1)")
-      ->check(CLI::Range(0.0, 0.99))->capture_default_str();
+      ->check(cli::finite_range(0.0, 0.99))->capture_default_str();
   app.add_option("--angle-fluctuation", o.angle_fluctuation, "polygon angle fluctuation delta, [0, 1]")
-      ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+      ->check(cli::finite_range(0.0, 1.0))->capture_default_str();
   app.add_option("--asphalt-content", o.asphalt_content, "binder, mass fraction of the mix")
-      ->check(CLI::Range(0.0, 0.5))->capture_default_str();
-  app.add_option("--gsb", o.gsb, "aggregate bulk specific gravity")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--gmb", o.gmb, "mix bulk specific gravity")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--disk-radius-mm", o.disk_radius_mm, "disk radius")->check(CLI::Range(0.05, 10.0))
+      ->check(cli::finite_range(0.0, 0.5))->capture_default_str();
+  app.add_option("--gsb", o.gsb, "aggregate bulk specific gravity")->check(cli::finite_positive())->capture_default_str();
+  app.add_option("--gmb", o.gmb, "mix bulk specific gravity")->check(cli::finite_positive())->capture_default_str();
+  app.add_option("--disk-radius-mm", o.disk_radius_mm, "disk radius")->check(cli::finite_range(0.05, 10.0))
       ->capture_default_str();
   app.add_option("--air-voids", o.air_voids, "air void fraction of the section, [0, 0.3]")
-      ->check(CLI::Range(0.0, 0.3))->capture_default_str();
+      ->check(cli::finite_range(0.0, 0.3))->capture_default_str();
   app.add_option("--placement", o.placement,
                  "where random tries jam: scan (systematic, the default) or jiggle (Monte Carlo moves; random)")
       ->check(CLI::IsMember({"scan", "jiggle"}))->capture_default_str();
   app.add_option("--binder-film-mm", o.binder_film_mm,
                  "least gap between two aggregates, a film of mastic (0: they may touch)")
-      ->check(CLI::Range(0.0, 10.0))->capture_default_str();
+      ->check(cli::finite_range(0.0, 10.0))->capture_default_str();
 }
 
 inline vrut::SpecimenSettings to_settings(const SpecimenOptions& o) {

@@ -122,7 +122,8 @@ inline BurgersBonded::params_type mastic_params(const BurgersMacro& macro, doubl
 inline LinearBonded::params_type aggregate_params(double modulus, double thickness, double nu, double friction = 0.5,
                                                   const BondStrength& bond = {}) {
   validate_poisson(nu);
-  if (!(modulus > 0.0)) throw std::invalid_argument("aggregate modulus must be positive");
+  if (!(modulus > 0.0) || !std::isfinite(modulus))
+    throw std::invalid_argument("aggregate modulus must be positive and finite");
   if (!(thickness > 0.0)) throw std::invalid_argument("disk thickness must be positive");
   const double kn = 2.0 * thickness * modulus;
   return linear_bonded_params(kn, kn / (2.0 * (1.0 + nu)), friction, bond.normal, bond.shear);

@@ -5,6 +5,7 @@
 // gives the same deformation as the unshifted one at real time; what changes
 // is the inertia, which is why the claim "shift factors up to 1e4 change
 // nothing" must be checked on the full model.
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -14,7 +15,8 @@ struct TimeShift {
   double alpha = 1.0;
 
   explicit TimeShift(double a = 1.0) : alpha(a) {
-    if (!(alpha > 0.0)) throw std::invalid_argument("shift factor alpha_T must be positive, got " + std::to_string(a));
+    if (!(alpha > 0.0) || !std::isfinite(alpha))
+      throw std::invalid_argument("shift factor alpha_T must be positive and finite, got " + std::to_string(a));
   }
   double reduced_time(double t) const { return t / alpha; }
   double real_time(double reduced) const { return reduced * alpha; }

@@ -56,7 +56,12 @@ struct WheelTracking {
     positive(passes_per_minute, "passes per minute");
     positive(minutes, "test duration");
     if (!(ds_from_minute > 0.0 && ds_from_minute < minutes))
-      throw std::invalid_argument("the dynamic-stability start minute must lie inside the test");
+    {
+      char text[160];
+      std::snprintf(text, sizeof text, "the test (%g min) must last longer than minute %g, where the window of the "
+                    "dynamic stability starts", minutes, ds_from_minute);
+      throw std::invalid_argument(text);
+    }
     if (!(contact_length() < section_width_m))
       throw std::invalid_argument("the loading plate (" + std::to_string(contact_length() * 1e3) +
                                   " mm) is longer than the specimen (" + std::to_string(section_width_m * 1e3) + " mm)");

@@ -93,7 +93,9 @@ inline Gradation parse_gradation_csv(std::istream& in, const std::string& path) 
     g.passing.push_back(p);
     line_of.push_back(number);
   }
-  if (g.sieve_mm.empty()) throw std::invalid_argument(path + ": no sieve lines");
+  if (g.sieve_mm.empty())
+    throw std::invalid_argument(path + ": no sieve lines (a header alone is no gradation): give at least two "
+                                "'sieve_mm,percent_passing' lines");
   validate_gradation(g, [&](std::size_t i) { return path + ":" + std::to_string(line_of[i]); });
   return g;
 }

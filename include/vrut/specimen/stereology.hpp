@@ -103,6 +103,13 @@ inline Stereology stereology(const Gradation& g, const MixVolumetrics& mix) {
     s.number_per_volume.push_back(p / v);
     s.coarse_volume_fraction += p;
   }
+  // Refused rather than run: with nothing retained on the coarse limit the
+  // section has no stone, and the rutting model is a skeleton of stones in
+  // mastic. A pure mastic is what the creep test (vrut-creep) models.
+  if (!(s.coarse_volume_fraction > 0.0))
+    throw std::invalid_argument("gradation " + g.name + " retains nothing on the " + std::to_string(limit) +
+                                " mm sieve (it all passes): it has no stones to place, and the virtual rutting "
+                                "test needs a skeleton of stones in mastic; a mastic alone is vrut-creep's test");
   for (const SizeClass& sec : s.classes) {
     double n = 0.0;
     for (std::size_t i = 0; i < s.classes.size(); ++i)
