@@ -201,6 +201,16 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                "each pair of stones meets through its own film, sized from where its disks lie inside the stones' "
                "outlines (implies --film-between-stones; --film-gap is then unused, --film-endless refused)")
       ->group("Materials");  // no CLI excludes: config.ini holds every option, and reads back
+  app.add_flag("--rigid-stones", mat.rigid_stones,
+               "each aggregate moves as one rigid body; stones and walls meet on --stone-contact-ratio times the "
+               "mastic's spring E1 t, damped, instead of the stone's 2 t E (far fewer steps)")
+      ->group("Numerics");
+  app.add_option("--stone-contact-ratio", mat.stone_contact_ratio,
+                 "with --rigid-stones: the stone-stone and wall spring over the mastic's E1 t")
+      ->check(cli::finite_positive())->capture_default_str()->group("Numerics");
+  app.add_option("--stone-damping", mat.stone_damping,
+                 "with --rigid-stones: the stone-stone and wall dashpot, a fraction of critical damping")
+      ->check(cli::finite_range(0.0, 0.99))->capture_default_str()->group("Numerics");
   app.add_option("--wall-friction", mat.wall_friction, "mould and plate friction")->check(cli::finite_range(0.0, 10.0))
       ->capture_default_str()->group("Materials");
   app.add_option("--pressure-mpa", o.pressure_mpa, "wheel contact pressure p")->check(cli::finite_positive())
@@ -480,13 +490,14 @@ int main(int argc, char** argv) {
       per_seed.precision(17);
       per_seed << "seed,disks,aggregates,aggregate_area_fraction,rut_depth_mm,deformation_45min_mm,"
                   "deformation_60min_mm,dynamic_stability_passes_per_mm,dynamic_stability_is_lower_bound,"
-                  "deformation_resolution_mm\n";
+                  "deformation_resolution_mm,stones,stone_pairs_touching,steps\n";
       for (std::size_t e = 0; e < runs.size(); ++e)
         per_seed << seeds[e] << ',' << runs[e].particles << ',' << facts[e].aggregates << ','
                  << facts[e].aggregate_area_fraction << ',' << runs[e].deformation_final * 1e3 << ','
                  << runs[e].deformation_at_ds_start * 1e3 << ',' << runs[e].deformation_final * 1e3 << ','
                  << runs[e].dynamic_stability << ',' << (runs[e].dynamic_stability_is_lower_bound ? 1 : 0) << ','
-                 << runs[e].deformation_resolution * 1e3 << '\n';
+                 << runs[e].deformation_resolution * 1e3 << ',' << runs[e].stones << ','
+                 << runs[e].stone_pairs_touching << ',' << runs[e].steps << '\n';
       output->write_text("seeds.csv", per_seed.str());
     }
 
@@ -499,6 +510,12 @@ int main(int argc, char** argv) {
     j["particles"] = disks;
     j["bonds"] = res.bonds;
     j["contacts"] = res.contacts;
+    // The skeleton at the end, of the first specimen: stones, the pairs of
+    // them touching, and touching neighbours per stone (2 pairs / stones).
+    j["stones"] = res.stones;
+    j["stone_pairs_touching"] = res.stone_pairs_touching;
+    j["stone_neighbours_per_stone"] = res.stones > 0 ? 2.0 * res.stone_pairs_touching / res.stones : 0.0;
+    j["rigid_stones"] = mat.rigid_stones;
     j["steps"] = res.steps;
     j["reduced_dt_s"] = res.dt;
     j["wall_seconds"] = wall_seconds;

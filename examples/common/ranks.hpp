@@ -122,6 +122,7 @@ inline nlohmann::json to_json(const vrut::RuttingResult& r, const SpecimenFacts&
           {"deformation_resolution", r.deformation_resolution},
           {"plate", {r.plate_x0, r.plate_x1, r.plate_y_final}},
           {"particles", r.particles}, {"contacts", r.contacts}, {"bonds", r.bonds},
+          {"stones", r.stones}, {"stone_pairs_touching", r.stone_pairs_touching},
           {"interrupted", r.interrupted}, {"steps", r.steps}, {"dt", r.dt}, {"wall_seconds", r.wall_seconds},
           {"aggregates", f.aggregates}, {"aggregate_area_fraction", f.aggregate_area_fraction}, {"rank", f.rank}};
 }
@@ -138,6 +139,7 @@ inline std::pair<vrut::RuttingResult, SpecimenFacts> from_json(const nlohmann::j
   r.deformation_resolution = j.at("deformation_resolution");
   r.plate_x0 = j.at("plate")[0], r.plate_x1 = j.at("plate")[1], r.plate_y_final = j.at("plate")[2];
   r.particles = j.at("particles"), r.contacts = j.at("contacts"), r.bonds = j.at("bonds");
+  r.stones = j.at("stones"), r.stone_pairs_touching = j.at("stone_pairs_touching");
   r.interrupted = j.at("interrupted"), r.steps = j.at("steps"), r.dt = j.at("dt"), r.wall_seconds = j.at("wall_seconds");
   return {r, {j.at("aggregates"), j.at("aggregate_area_fraction"), j.at("rank")}};
 }

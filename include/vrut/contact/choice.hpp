@@ -16,6 +16,8 @@ struct Choice {
   static_assert(check_contact_law<First>(), "vrut::Choice: First is not a contact law");
   static_assert(check_contact_law<Second>(), "vrut::Choice: Second is not a contact law");
 
+  static constexpr bool uses_mass = law_uses_mass<First>() || law_uses_mass<Second>();
+
   struct params_type {
     int use_second = 0;
     typename First::params_type first;

@@ -39,6 +39,7 @@ struct Composite {
   using normal_slot = Normal;
   using shear_slot = Shear;
   using bond_slot = Bond;
+  static constexpr bool uses_mass = law_uses_mass<Normal>() || law_uses_mass<Shear>();
 
   struct params_type {
     typename Normal::params_type normal;
@@ -84,10 +85,22 @@ using Linear = Composite<LinearNormal, LinearShear, NoBond>;
 using LinearBonded = Composite<LinearNormal, LinearShear, ContactBond>;
 using Burgers = Composite<BurgersNormal, BurgersShear, NoBond>;
 using BurgersBonded = Composite<BurgersNormal, BurgersShear, ContactBond>;
+// Stone on stone and stone on wall with rigid stones: damped (linear.hpp).
+using DampedLinear = Composite<DampedLinearNormal, LinearShear, NoBond>;
+using DampedLinearBonded = Composite<DampedLinearNormal, LinearShear, ContactBond>;
 
 inline Linear::params_type linear_params(double kn, double ks, double friction) {
   Linear::params_type p;
   p.normal.stiffness = kn;
+  p.shear.stiffness = ks;
+  p.friction = friction;
+  return p;
+}
+
+inline DampedLinear::params_type damped_linear_params(double kn, double ks, double friction, double damping_ratio) {
+  DampedLinear::params_type p;
+  p.normal.stiffness = kn;
+  p.normal.damping_ratio = damping_ratio;
   p.shear.stiffness = ks;
   p.friction = friction;
   return p;

@@ -57,6 +57,9 @@ template <class L>
 struct has_prepare<L, std::void_t<decltype(L::prepare(std::declval<typename L::params_type&>(), 0.0))>>
     : std::true_type {};
 
+template <class, class = void> struct has_uses_mass : std::false_type {};
+template <class L> struct has_uses_mass<L, std::void_t<decltype(L::uses_mass)>> : std::bool_constant<L::uses_mass> {};
+
 template <class L, bool = has_params_type<L>::value && has_state_type<L>::value>
 struct law_members_ok : std::false_type {};
 template <class L>
@@ -101,6 +104,14 @@ KOKKOS_INLINE_FUNCTION void make_bonded(typename Law::state_type& s) {
   if constexpr (detail::has_bond<Law>::value) Law::bond(s);
   else (void)s;
 }
+// Whether a law reads the masses of ContactGeometry (a law or slot says so
+// with `static constexpr bool uses_mass = true`); the engine fills them only
+// then, so laws without it cost no extra memory traffic.
+template <class Law>
+constexpr bool law_uses_mass() {
+  return detail::has_uses_mass<Law>::value;
+}
+
 // Host-side: a law's per-time-step preparation, where it has one.
 template <class Law>
 void prepare_law(typename Law::params_type& p, double dt) {

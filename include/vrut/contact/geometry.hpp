@@ -17,7 +17,11 @@ struct ContactGeometry {
   double normal_increment = 0.0;  // change of overlap during the last step
   double shear_increment = 0.0;   // tangential slip of the second body relative to the first, last step
   double dt = 0.0;
-  double radius_1 = 0.0, radius_2 = 0.0;  // radius_2 == 0 for a wall
+  double radius_1 = 0.0, radius_2 = 0.0;  // radius_1 == 0 for a wall
+  // The masses the contact moves: a disk's own, or its rigid body's where it
+  // is a member of one; 0 for a wall (which no contact moves). Set only for
+  // laws that read them (`static constexpr bool uses_mass = true`).
+  double mass_1 = 0.0, mass_2 = 0.0;
 };
 
 // v limited to [-limit, limit]: the Coulomb slider of the shear slots.

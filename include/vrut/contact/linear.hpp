@@ -17,6 +17,29 @@ struct LinearNormal {
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) { return p.stiffness; }
 };
 
+// A linear spring with a viscous dashpot beside it, set as a fraction of the
+// critical damping of the pair: F_n = k_n overlap + c d(overlap)/dt, with
+// c = 2 zeta sqrt(k_n m*), m* = m_1 m_2 / (m_1 + m_2) (m_2 against a wall).
+// Rigid stones ring undamped on a plain spring; real stone rings down. With
+// zeta = 0 it is LinearNormal, bit for bit.
+struct DampedLinearNormal {
+  struct params_type {
+    double stiffness = 0.0;      // k_n, N/m
+    double damping_ratio = 0.0;  // zeta, of critical
+  };
+  struct state_type {};
+  static constexpr bool uses_mass = true;
+  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type&, const ContactGeometry& g) {
+    double f = p.stiffness * g.overlap;
+    if (p.damping_ratio > 0.0) {
+      const double m = g.mass_1 > 0.0 ? g.mass_1 * g.mass_2 / (g.mass_1 + g.mass_2) : g.mass_2;
+      f += 2.0 * p.damping_ratio * sqrt(p.stiffness * m) * g.normal_increment / g.dt;
+    }
+    return f;
+  }
+  KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) { return p.stiffness; }
+};
+
 // Incremental shear spring: dF_s = -k_s * (tangential slip during the step).
 struct LinearShear {
   struct params_type { double stiffness = 0.0; };  // k_s, N/m

@@ -167,6 +167,7 @@ class ContactList {
     auto old_state = state;
     auto x = ps.position;
     auto r = ps.radius;
+    auto body = ps.body;
     auto cof = cell_of;
     auto start = cell_start;
     auto members = cell_particles;
@@ -186,6 +187,7 @@ class ContactList {
               for (int m = start(c); m < start(c + 1); ++m) {
                 const int j = members(m);
                 if (j <= i) continue;
+                if (body(i) >= 0 && body(j) == body(i)) continue;  // two members of one rigid body never touch
                 const double reach = r(i) + r(j) + skin;
                 const Vec2 d = x(j) - x(i);
                 if (dot(d, d) < reach * reach) {

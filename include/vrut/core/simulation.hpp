@@ -12,6 +12,11 @@
 // the motion advanced; the wall loads summed in a fixed order; the
 // controllers set the wall velocities; the walls move.
 //
+// Rigid bodies (data/bodies.hpp, ParticleSet::body): a member disk's
+// contact forces and moments are summed as any disk's, but the disk does not
+// advance: its body sums its members' loads in a fixed order, advances, and
+// places them again. Two members of one body never touch.
+//
 // Ensembles: the disks may belong to several specimens (ParticleSet::specimen)
 // that share every kernel launch but never interact: contacts are searched
 // within a specimen only, and each wall belongs to one specimen and touches
@@ -21,6 +26,7 @@
 #include <vrut/contact/concept.hpp>
 #include <vrut/core/assignment.hpp>
 #include <vrut/core/contact_list.hpp>
+#include <vrut/data/bodies.hpp>
 #include <vrut/data/particle_set.hpp>
 #include <vrut/data/particles.hpp>
 #include <vrut/data/walls.hpp>
@@ -90,6 +96,8 @@ class Simulation {
     auto hs = Kokkos::create_mirror_view(particles_.specimen);
     if (!set.specimen.empty() && set.specimen.size() != set.size())
       throw std::invalid_argument("vrut::Simulation: the specimen index list has the wrong length");
+    if (!set.body.empty() && set.body.size() != set.size())
+      throw std::invalid_argument("vrut::Simulation: the body index list has the wrong length");
     specimen_begin_host_.assign(1, 0);
     double rmax = 0.0;
     for (int i = 0; i < n; ++i) {
@@ -122,6 +130,7 @@ class Simulation {
     Kokkos::deep_copy(particles_.inertia, hi);
     Kokkos::deep_copy(particles_.group, hg);
     Kokkos::deep_copy(particles_.specimen, hs);
+    build_bodies(set, h, hm, hi, hs);
     specimen_begin_ = Kokkos::View<int*, memory_space>("specimen_begin", specimen_begin_host_.size());
     {
       auto hb = Kokkos::create_mirror_view(specimen_begin_);
@@ -133,9 +142,13 @@ class Simulation {
     largest_diameter_ = 2.0 * rmax;
 
     auto hp = Kokkos::create_mirror_view(law_params_);
+    pair_stiffness_.assign(static_cast<std::size_t>(table.groups()) * table.groups(), -1.0);
     for (int a = 0; a < table.groups(); ++a)
       for (int b = 0; b < table.groups(); ++b)
-        if (table.is_set(a, b)) hp(a, b) = table(a, b);
+        if (table.is_set(a, b)) {
+          hp(a, b) = table(a, b);
+          pair_stiffness_[static_cast<std::size_t>(a) * table.groups() + b] = Law::stiffness(table(a, b));
+        }
     Kokkos::deep_copy(law_params_, hp);
     rebuild_walls(0);
   }
@@ -229,7 +242,11 @@ class Simulation {
 
   // sqrt(m_min / k_max): the time scale of the lightest disk on the stiffest
   // spring. Multiply by a safety factor (0.1 to 0.3 for dense packings).
+  // With rigid bodies, the time scale of the contacts that exist instead
+  // (contact_timestep): a member's mass is its body's, and a stiff spring
+  // between heavy bodies does not set the step of the light disks.
   double critical_timestep() const {
+    if (bodies_.size() > 0) return contact_timestep();
     auto m = particles_.mass;
     double mmin = 0.0;
     Kokkos::parallel_reduce("vrut::min_mass", Kokkos::RangePolicy<execution_space>(space_, 0, m.extent(0)),
@@ -237,6 +254,70 @@ class Simulation {
     const double k = std::max(max_law_stiffness_, wall_stiffness_);
     if (!(k > 0.0)) throw std::logic_error("vrut::Simulation: no positive contact stiffness");
     return std::sqrt(mmin / k);
+  }
+
+  // The smallest sqrt(m / k) over the springs that can act: for each two
+  // material groups present, the table's stiffness over the lighter of the
+  // two groups' lightest masses; for the walls, their stiffest spring over
+  // the lightest mass of any group. A disk's mass is its own; a member's is
+  // 1 / (1 / M + d^2 / I), its body's mass M as felt at its centre, d from
+  // the body's (a normal force acts through the member's centre).
+  double contact_timestep() const {
+    const int groups = static_cast<int>(std::lround(std::sqrt(static_cast<double>(pair_stiffness_.size()))));
+    auto lightest = [&](int g) {
+      return g < static_cast<int>(lightest_contact_mass_.size()) ? lightest_contact_mass_[g] : 0.0;
+    };
+    double worst = 0.0;  // largest k / m
+    double mall = 0.0;
+    for (int a = 0; a < groups; ++a) {
+      if (!(lightest(a) > 0.0)) continue;
+      mall = mall > 0.0 ? std::min(mall, lightest(a)) : lightest(a);
+      for (int b = 0; b < groups; ++b) {
+        const double k = pair_stiffness_[static_cast<std::size_t>(a) * groups + b];
+        if (lightest(b) > 0.0 && k > 0.0) worst = std::max(worst, k / std::min(lightest(a), lightest(b)));
+      }
+    }
+    if (wall_stiffness_ > 0.0) worst = std::max(worst, wall_stiffness_ / mall);
+    if (!(worst > 0.0)) throw std::logic_error("vrut::Simulation: no positive contact stiffness");
+    return 1.0 / std::sqrt(worst);
+  }
+
+  // --- rigid bodies ---------------------------------------------------------
+  int body_count() const { return static_cast<int>(bodies_.size()); }
+  Bodies<memory_space>& bodies() { return bodies_; }
+  const Bodies<memory_space>& bodies() const { return bodies_; }
+  // Sets body b's velocity and angular velocity, and its members' with it.
+  void set_body_motion(int b, Vec2 velocity, double angular_velocity) {
+    if (b < 0 || b >= body_count()) throw std::invalid_argument("vrut::Simulation: no body " + std::to_string(b));
+    auto v = Kokkos::subview(bodies_.velocity, b);
+    auto w = Kokkos::subview(bodies_.angular_velocity, b);
+    Kokkos::deep_copy(v, velocity);
+    Kokkos::deep_copy(w, angular_velocity);
+    place_members();
+  }
+  // Puts every member where its body says, with the body's motion at that
+  // point: x = X + R(theta) offset, v = V + omega perp(R offset).
+  void place_members() {
+    if (bodies_.size() == 0) return;
+    auto ps = particles_;
+    auto bs = bodies_;
+    Kokkos::parallel_for("vrut::place_members", Kokkos::RangePolicy<execution_space>(space_, 0, bs.size()),
+        KOKKOS_LAMBDA(const int b) { place_members_of(ps, bs, b); });
+  }
+  KOKKOS_INLINE_FUNCTION static void place_members_of(const Particles<memory_space>& ps, const Bodies<memory_space>& bs,
+                                                      int b) {
+    const Vec2 X = bs.position(b), V = bs.velocity(b);
+    const double theta = bs.rotation(b), w = bs.angular_velocity(b);
+    for (int k = bs.member_begin(b); k < bs.member_begin(b + 1); ++k) {
+      const int i = bs.member(k);
+      const Vec2 off = rotated(bs.offset(k), theta);
+      const Vec2 x = X + off;
+      ps.displacement(i) += x - ps.position(i);
+      ps.position(i) = x;
+      ps.velocity(i) = V + w * perp(off);
+      ps.angular_velocity(i) = w;
+      ps.rotation(i) = theta;
+    }
   }
 
   // --- running --------------------------------------------------------------
@@ -253,6 +334,7 @@ class Simulation {
     if (dt != prepared_dt_) prepare_laws(dt);
     contact_forces(dt);
     sum_and_advance(dt);
+    if (bodies_.size() > 0) advance_bodies(dt);
     move_walls(dt);
     time_ += dt;
     ++steps_;
@@ -353,6 +435,14 @@ class Simulation {
     a.view("angular_velocity", p.angular_velocity);
     a.view("moment", p.moment);
     a.view("fixity", p.fixity);
+    if (bodies_.size() > 0) {  // only then: checkpoints without bodies stay as they were
+      a.view("body_position", bodies_.position);
+      a.view("body_velocity", bodies_.velocity);
+      a.view("body_force", bodies_.force);
+      a.view("body_rotation", bodies_.rotation);
+      a.view("body_angular_velocity", bodies_.angular_velocity);
+      a.view("body_moment", bodies_.moment);
+    }
     a.view("contact_partner", contacts_.partner);
     a.view("contact_count", contacts_.count);
     a.view("contact_state", contacts_.state);
@@ -414,6 +504,10 @@ class Simulation {
             g.dt = dt;
             g.radius_1 = ps.radius(i);
             g.radius_2 = ps.radius(j);
+            if constexpr (law_uses_mass<Law>()) {
+              g.mass_1 = ps.contact_mass(i);
+              g.mass_2 = ps.contact_mass(j);
+            }
             const ContactForce f = Law::force(params(ps.group(i), ps.group(j)), state(i, k), g);
             ContactLoad l;
             l.force = f.normal * g.normal + f.shear * t;
@@ -481,6 +575,7 @@ class Simulation {
             g.dt = dt;
             g.radius_1 = 0.0;
             g.radius_2 = ps.radius(i);
+            if constexpr (law_uses_mass<WallLaw>()) g.mass_2 = ps.contact_mass(i);  // mass_1 = 0: a wall
             const ContactForce cf = WallLaw::force(wparams(w), wstate(i, q), g);
             const Vec2 on_disk = cf.normal * g.normal + cf.shear * t;
             f += on_disk;
@@ -493,7 +588,30 @@ class Simulation {
           wtouch(i) = holds;
           ps.force(i) = f;
           ps.moment(i) = m;
-          Integrator::advance(integrator, ps, i, f, m, dt);
+          if (ps.body(i) < 0) Integrator::advance(integrator, ps, i, f, m, dt);  // a member moves with its body
+        });
+  }
+
+  // Each body sums its members' forces and their moments about its centre,
+  // in the members' order, advances, and places its members again.
+  void advance_bodies(double dt) {
+    auto ps = particles_;
+    auto bs = bodies_;
+    const integrator_params integrator = integrator_;
+    Kokkos::parallel_for("vrut::advance_bodies", Kokkos::RangePolicy<execution_space>(space_, 0, bs.size()),
+        KOKKOS_LAMBDA(const int b) {
+          const Vec2 X = bs.position(b);
+          Vec2 f;
+          double m = 0.0;
+          for (int k = bs.member_begin(b); k < bs.member_begin(b + 1); ++k) {
+            const int i = bs.member(k);
+            f += ps.force(i);
+            m += ps.moment(i) + cross(ps.position(i) - X, ps.force(i));
+          }
+          bs.force(b) = f;
+          bs.moment(b) = m;
+          Integrator::advance_body(integrator, bs, b, f, m, dt);
+          place_members_of(ps, bs, b);
         });
   }
 
@@ -623,6 +741,79 @@ class Simulation {
     push_walls();
   }
  private:
+  // Bodies from ParticleSet::body, on the host mirrors of the disks' centres,
+  // masses, inertias and specimens: each body's mass is its members', its
+  // centre their centre of mass, its inertia theirs about it.
+  template <class HostVec2, class HostDouble, class HostInt>
+  void build_bodies(const ParticleSet& set, const HostVec2& x, const HostDouble& mass, const HostDouble& inertia,
+                    const HostInt& specimen) {
+    const int n = static_cast<int>(set.size());
+    auto hcm = Kokkos::create_mirror_view(particles_.contact_mass);
+    for (int i = 0; i < n; ++i) hcm(i) = mass(i);
+    const int nb = set.bodies();
+    lightest_contact_mass_.clear();
+    std::vector<std::vector<int>> members(nb);
+    for (int i = 0; i < n && !set.body.empty(); ++i)
+      if (set.body[i] >= 0) members[set.body[i]].push_back(i);
+    std::size_t total = 0;
+    for (int b = 0; b < nb; ++b) {
+      if (members[b].empty()) throw std::invalid_argument("vrut::Simulation: body " + std::to_string(b) + " has no member");
+      total += members[b].size();
+    }
+    std::vector<double> member_mass(n, 0.0);
+    if (nb > 0) {
+      bodies_ = Bodies<memory_space>(nb, total);
+      auto hx = Kokkos::create_mirror_view(bodies_.position);
+      auto hm = Kokkos::create_mirror_view(bodies_.mass);
+      auto hi = Kokkos::create_mirror_view(bodies_.inertia);
+      auto hbegin = Kokkos::create_mirror_view(bodies_.member_begin);
+      auto hmember = Kokkos::create_mirror_view(bodies_.member);
+      auto hoff = Kokkos::create_mirror_view(bodies_.offset);
+      auto hbody = Kokkos::create_mirror_view(particles_.body);
+      Kokkos::deep_copy(hbody, -1);
+      int slot = 0;
+      for (int b = 0; b < nb; ++b) {
+        double M = 0.0, mx = 0.0, my = 0.0;
+        for (int i : members[b]) {
+          if (specimen(i) != specimen(members[b].front()))
+            throw std::invalid_argument("vrut::Simulation: body " + std::to_string(b) + " has members in two specimens");
+          M += mass(i), mx += mass(i) * x(i).x, my += mass(i) * x(i).y;
+        }
+        const Vec2 X{mx / M, my / M};
+        double I = 0.0;
+        for (int i : members[b]) I += inertia(i) + mass(i) * dot(x(i) - X, x(i) - X);
+        hx(b) = X, hm(b) = M, hi(b) = I, hbegin(b) = slot;
+        for (int i : members[b]) {
+          hmember(slot) = i;
+          hoff(slot) = x(i) - X;
+          hbody(i) = b;
+          hcm(i) = M;
+          // The body as felt at the member's centre, for the time step.
+          member_mass[i] = 1.0 / (1.0 / M + dot(x(i) - X, x(i) - X) / I);
+          ++slot;
+        }
+      }
+      hbegin(nb) = slot;
+      Kokkos::deep_copy(bodies_.position, hx);
+      Kokkos::deep_copy(bodies_.mass, hm);
+      Kokkos::deep_copy(bodies_.inertia, hi);
+      Kokkos::deep_copy(bodies_.member_begin, hbegin);
+      Kokkos::deep_copy(bodies_.member, hmember);
+      Kokkos::deep_copy(bodies_.offset, hoff);
+      Kokkos::deep_copy(particles_.body, hbody);
+    }
+    Kokkos::deep_copy(particles_.contact_mass, hcm);
+    // Each group's lightest mass a contact moves (0: the group is absent).
+    int groups = 0;
+    for (int g : set.group) groups = std::max(groups, g + 1);
+    lightest_contact_mass_.assign(groups, 0.0);
+    for (int i = 0; i < n; ++i) {
+      const double m = nb > 0 && !set.body.empty() && set.body[i] >= 0 ? member_mass[i] : mass(i);
+      double& l = lightest_contact_mass_[set.group[i]];
+      l = l > 0.0 ? std::min(l, m) : m;
+    }
+  }
+
   void push_walls() {
     const int nwalls = walls();
     auto hw = Kokkos::create_mirror_view(walls_);
@@ -647,6 +838,9 @@ class Simulation {
   SimulationSettings settings_;
   integrator_params integrator_;
   Particles<memory_space> particles_;
+  Bodies<memory_space> bodies_;
+  std::vector<double> pair_stiffness_;         // groups x groups, the table's stiffness (-1: not set)
+  std::vector<double> lightest_contact_mass_;  // per group (0: absent)
   Kokkos::View<params_type**, memory_space> law_params_;
   double max_law_stiffness_ = 0.0, wall_stiffness_ = 0.0, largest_diameter_ = 0.0;
   int wall_blocks_ = 0;

@@ -14,31 +14,46 @@ struct ParticleSet {
   // Disks of different specimens never touch, whatever their positions, and
   // each specimen's disks are contiguous and in increasing specimen order.
   std::vector<int> specimen;
+  // The rigid body (clump) each disk is a member of, -1 for a free disk.
+  // Members move as one (data/bodies.hpp) and never touch each other; a
+  // body's members lie in one specimen. Bodies are numbered from 0.
+  std::vector<int> body;
 
   std::size_t size() const { return x.size(); }
   int specimens() const { return specimen.empty() ? 0 : specimen.back() + 1; }
+  int bodies() const {
+    int n = 0;
+    for (int b : body) n = b + 1 > n ? b + 1 : n;
+    return n;
+  }
 
-  void add(double px, double py, double r, double rho, int g = 0) {
+  void add(double px, double py, double r, double rho, int g = 0, int member_of = -1) {
     if (!(r > 0.0)) throw std::invalid_argument("vrut: a disk radius must be positive");
     if (!(rho > 0.0)) throw std::invalid_argument("vrut: a disk density must be positive");
     if (g < 0) throw std::invalid_argument("vrut: a material group must be >= 0");
+    if (member_of < -1) throw std::invalid_argument("vrut: a body index must be >= 0 (-1: no body)");
     x.push_back(px);
     y.push_back(py);
     radius.push_back(r);
     density.push_back(rho);
     group.push_back(g);
     specimen.push_back(specimens() > 0 ? specimen.back() : 0);
+    body.push_back(member_of);
   }
 
-  // Appends every disk of `other` as a new specimen; returns its index.
+  // Appends every disk of `other` as a new specimen, its bodies numbered
+  // after the ones already here; returns its index.
   int append_specimen(const ParticleSet& other) {
     const int s = size() == 0 ? 0 : specimens();
+    const int first_body = bodies();
     x.insert(x.end(), other.x.begin(), other.x.end());
     y.insert(y.end(), other.y.begin(), other.y.end());
     radius.insert(radius.end(), other.radius.begin(), other.radius.end());
     density.insert(density.end(), other.density.begin(), other.density.end());
     group.insert(group.end(), other.group.begin(), other.group.end());
     specimen.insert(specimen.end(), other.size(), s);
+    for (std::size_t i = 0; i < other.size(); ++i)
+      body.push_back(i < other.body.size() && other.body[i] >= 0 ? other.body[i] + first_body : -1);
     return s;
   }
 };

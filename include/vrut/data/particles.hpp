@@ -25,6 +25,10 @@ struct Particles {
   view<Vec2> position, velocity, force, external_force, displacement;
   view<double> radius, mass, inertia, rotation, angular_velocity, moment;
   view<int> group, fixity, specimen;  // specimen: index in an ensemble (ParticleSet::specimen)
+  // The rigid body a disk is a member of (data/bodies.hpp), -1 for a free
+  // disk; and the mass a contact on it moves: its body's, or its own.
+  view<int> body;
+  view<double> contact_mass;
 
   Particles() = default;
   explicit Particles(std::size_t n)
@@ -32,7 +36,9 @@ struct Particles {
         external_force("external_force", n), displacement("displacement", n),
         radius("radius", n), mass("mass", n), inertia("inertia", n), rotation("rotation", n),
         angular_velocity("angular_velocity", n), moment("moment", n), group("group", n),
-        fixity("fixity", n), specimen("specimen", n) {}
+        fixity("fixity", n), specimen("specimen", n), body("body", n), contact_mass("contact_mass", n) {
+    Kokkos::deep_copy(body, -1);
+  }
 
   std::size_t size() const { return position.extent(0); }
 };

@@ -5,6 +5,7 @@
 // which removes energy in proportion to the unbalanced force, not to speed.
 // Velocities live at half steps: v(t+dt/2) = v(t-dt/2) + F_d/m dt,
 // x(t+dt) = x(t) + v(t+dt/2) dt.
+#include <vrut/data/bodies.hpp>
 #include <vrut/data/particles.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -40,6 +41,23 @@ struct CentralDifference {
       ps.angular_velocity(i) = w;
     }
     ps.rotation(i) += w * dt;
+  }
+
+  // A rigid body (data/bodies.hpp) advances as one disk does, with its mass
+  // and moment of inertia, the summed force and the moment about its centre.
+  template <class MemorySpace>
+  KOKKOS_INLINE_FUNCTION static void advance_body(const params_type& p, const Bodies<MemorySpace>& bs, int b,
+                                                  Vec2 force, double moment, double dt) {
+    Vec2 v = bs.velocity(b);
+    const double inv_m = 1.0 / bs.mass(b);
+    v.x += damped(force.x, v.x, p.damping) * inv_m * dt;
+    v.y += damped(force.y, v.y, p.damping) * inv_m * dt;
+    bs.velocity(b) = v;
+    bs.position(b) += dt * v;
+    double w = bs.angular_velocity(b);
+    w += damped(moment, w, p.damping) / bs.inertia(b) * dt;
+    bs.angular_velocity(b) = w;
+    bs.rotation(b) += w * dt;
   }
 };
 

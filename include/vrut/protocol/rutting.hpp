@@ -25,6 +25,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace vrut {
@@ -106,7 +107,27 @@ struct RuttingMaterials {
   // film_between_stones.
   bool film_per_contact = false;
   double wall_friction = 0.0;           // mould walls and plate
+  // Rigid stones (data/bodies.hpp): each aggregate moves as one body instead
+  // of bonded disks on the stone's 2 t E springs. Stone on stone, and any
+  // disk on a wall, then meet on a linear spring of stone_contact_ratio
+  // times the mastic's normal spring E1 t (a numerical stiffness: stiff
+  // enough that the answer no longer moves, and no stiffer), beside a
+  // dashpot of stone_damping of the pair's critical damping: real stone
+  // rings down. The time step follows from these springs and the bodies'
+  // masses (Simulation::contact_timestep).
+  bool rigid_stones = false;
+  double stone_contact_ratio = 1000.0;
+  double stone_damping = 0.05;
 };
+
+// The normal spring between two rigid stones and of the walls, N/m.
+inline double rigid_stone_stiffness(const RuttingMaterials& m, double thickness) {
+  if (!(m.stone_contact_ratio > 0.0) || !std::isfinite(m.stone_contact_ratio))
+    throw std::invalid_argument("the stone contact ratio must be positive and finite");
+  if (!(m.stone_damping >= 0.0 && m.stone_damping < 1.0))
+    throw std::invalid_argument("the stone damping must lie in [0, 1) of critical");
+  return m.stone_contact_ratio * m.mastic.E1 * thickness;
+}
 
 struct RuttingNumerics {
   double shift = 1e4;                // alpha_T
@@ -146,12 +167,40 @@ struct RuttingResult {
   double plate_x0 = 0.0, plate_x1 = 0.0, plate_y_final = 0.0;     // m
   std::size_t particles = 0;
   int contacts = 0, bonds = 0;
+  // At the end: the stones holding disks, and the pairs of them that touch
+  // (some disk of one overlaps some disk of the other): the skeleton.
+  int stones = 0, stone_pairs_touching = 0;
   bool interrupted = false;                // stopped early on request: the samples so far, no DS
   long steps = 0;
   double dt = 0.0, wall_seconds = 0.0;
 };
 
-using RuttingLaw = Choice<BurgersFilmBonded, LinearBonded>;
+using RuttingLaw = Choice<BurgersFilmBonded, DampedLinearBonded>;
+using RuttingWallLaw = DampedLinear;
+
+// The stone law: the method's aggregate spring (2 t E, undamped), or the
+// rigid stones' contact spring with its dashpot.
+inline DampedLinearBonded::params_type stone_law_params(const RuttingMaterials& m, double thickness, double friction) {
+  const auto exact = aggregate_params(m.aggregate_modulus, thickness, m.aggregate_nu, friction);
+  DampedLinearBonded::params_type p;
+  p.normal.stiffness = exact.normal.stiffness;
+  p.shear.stiffness = exact.shear.stiffness;
+  p.bond = exact.bond;
+  p.friction = exact.friction;
+  if (m.rigid_stones) {
+    p.normal.stiffness = rigid_stone_stiffness(m, thickness);
+    p.shear.stiffness = p.normal.stiffness / (2.0 * (1.0 + m.aggregate_nu));
+    p.normal.damping_ratio = m.stone_damping;
+  }
+  return p;
+}
+
+// The mould's and the plate's law: as stiff as the stones' (and as damped).
+inline RuttingWallLaw::params_type rutting_wall_params(const RuttingMaterials& m, double thickness) {
+  const auto stone = stone_law_params(m, thickness, m.wall_friction);
+  return damped_linear_params(stone.normal.stiffness, stone.normal.stiffness / (2.0 * (1.0 + m.aggregate_nu)),
+                              m.wall_friction, stone.normal.damping_ratio);
+}
 
 // The film per contact sorts the stone disks' reaches into this many bins
 // of 0.2 diameters: its thickness is resolved to 0.2 diameters, about the
@@ -180,6 +229,21 @@ inline std::vector<int> rutting_groups(const Specimen& sp, const RuttingMaterial
   return group;
 }
 
+// Rigid stones: each aggregate that holds a disk becomes one body, numbered
+// in the aggregates' order; mastic disks are free (-1). (A stone too small
+// to hold a disk's centre is mastic, as the method's packing has it.)
+inline std::vector<int> stone_bodies(const Specimen& sp) {
+  std::vector<int> body_of(sp.placement.aggregates.size(), -1), body(sp.disks.aggregate.size(), -1);
+  for (int a : sp.disks.aggregate)
+    if (a >= 0) body_of[a] = 0;
+  int bodies = 0;
+  for (int& b : body_of)
+    if (b == 0) b = bodies++;
+  for (std::size_t i = 0; i < body.size(); ++i)
+    if (sp.disks.aggregate[i] >= 0) body[i] = body_of[sp.disks.aggregate[i]];
+  return body;
+}
+
 // Group 0 is the mastic; the aggregates are groups 1 .. stone_colours, one
 // per colour (specimen/colouring.hpp), so that the table can tell two stones
 // from one; with the film per contact, one per colour and reach bin
@@ -197,7 +261,7 @@ inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, doub
             RuttingLaw::make_first(film_params(mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0, m.friction))));
   const auto mastic_stone = RuttingLaw::make_first(
       film_params(mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction)));
-  const auto stone_params = aggregate_params(m.aggregate_modulus, thickness, m.aggregate_nu, stone_friction);
+  const auto stone_params = stone_law_params(m, thickness, stone_friction);
   const auto stone = RuttingLaw::make_second(stone_params);
   if (films) {
     if (!m.film_per_contact && !(m.film_gap > 0.0 && m.film_gap < 1.0))
@@ -330,6 +394,33 @@ void check_inside_moulds(Sim& sim, const std::vector<Specimen>& specimens, long 
   }
 }
 
+// The pairs of stones of specimen e that touch at the end, found in the
+// contact list (every overlapping disk pair is in it), and the stones.
+template <class Sim>
+std::pair<int, int> touching_stones(const Sim& sim, const Specimen& sp, int e) {
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().radius);
+  auto partner = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.contacts().partner);
+  auto count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.contacts().count);
+  const auto [first, last] = sim.specimen_range(e);
+  const std::vector<int>& stone = sp.disks.aggregate;
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<char> holds(sp.placement.aggregates.size(), 0);
+  for (int i = first; i < last; ++i) {
+    if (stone[i - first] >= 0) holds[stone[i - first]] = 1;
+    for (int k = 0; k < count(i); ++k) {
+      const int j = partner(i, k);
+      const int a = stone[i - first], b = stone[j - first];
+      if (a >= 0 && b >= 0 && a != b && norm(x(j) - x(i)) < r(i) + r(j)) pairs.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  const int distinct = static_cast<int>(std::unique(pairs.begin(), pairs.end()) - pairs.begin());
+  int stones = 0;
+  for (char h : holds) stones += h;
+  return {stones, distinct};
+}
+
 // Runs the test on every specimen of an ensemble side by side in one
 // Simulation: each kernel launch serves them all, and each specimen gets its
 // own mould and plate and exactly the result of its own single run (the time
@@ -390,10 +481,11 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     const int offset = static_cast<int>(all.size());
     ParticleSet set = to_particle_set(sp, mat.mastic_density, mat.aggregate_density);
     if (films) set.group = rutting_groups(sp, mat, colours[e]);
+    if (mat.rigid_stones) set.body = stone_bodies(sp);
     all.append_specimen(set);
     for (const auto& [i, j] : sp.disks.bonds) bonds.emplace_back(i + offset, j + offset);
   }
-  Simulation<RuttingLaw, Space, CentralDifference, LoadControl> sim(all, table, settings, integrator, space);
+  Simulation<RuttingLaw, Space, CentralDifference, LoadControl, RuttingWallLaw> sim(all, table, settings, integrator, space);
   std::vector<RuttingResult> results(count);
   sim.bond_pairs(bonds);
   for (int e = 0; e < count; ++e) {
@@ -402,8 +494,8 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   }
 
   // Each mould: bottom and both sides, linear and (by default) frictionless.
-  const double k_wall = aggregate_params(mat.aggregate_modulus, t, mat.aggregate_nu).normal.stiffness;
-  const auto wall_law = linear_params(k_wall, k_wall / (2.0 * (1.0 + mat.aggregate_nu)), mat.wall_friction);
+  const auto wall_law = rutting_wall_params(mat, t);
+  const double k_wall = wall_law.normal.stiffness;
   for (int e = 0; e < count; ++e) {
     const double width = specimens[e].settings.placement.width * 1e-3, height = specimens[e].settings.placement.height * 1e-3;
     sim.add_wall(Wall{{0.0, 0.0}, {width, 0.0}, {}}, wall_law, {}, e);
@@ -577,6 +669,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     res.wall_seconds = seconds_before + seconds;
     res.steps = done;
     res.contacts = sim.active_contacts(e);
+    std::tie(res.stones, res.stone_pairs_touching) = touching_stones(sim, specimens[e], e);
     res.plate_y_final = walls[plate[e]].start.y;
     const auto [first, last] = sim.specimen_range(e);
     for (int i = first; i < last; ++i) {

@@ -1,0 +1,47 @@
+#pragma once
+// Rigid bodies (clumps): sets of member disks that move as one, as PFC's
+// clumps and YADE's clumps do. A body carries the motion (centre of mass,
+// velocity, orientation, angular velocity) and its members follow it: each
+// member sits at a fixed offset from the centre in the body's frame. The
+// members' contact forces and moments are summed into the body, the body
+// advances, and the members are placed again from it (core/simulation.hpp).
+// The orientation is an angle here, in 2D; the members' offsets and the
+// inertia are what a 3D body turns into a quaternion and a tensor.
+#include <vrut/data/vec2.hpp>
+
+#include <Kokkos_Core.hpp>
+
+#include <cstddef>
+
+namespace vrut {
+
+template <class MemorySpace>
+struct Bodies {
+  using memory_space = MemorySpace;
+  template <class T>
+  using view = Kokkos::View<T*, MemorySpace>;
+
+  view<Vec2> position, velocity, force;          // centre of mass, its velocity, the summed force
+  view<double> mass, inertia, rotation, angular_velocity, moment;  // about the centre of mass
+  view<int> member_begin;  // body b's members are member(member_begin(b)) .. member(member_begin(b + 1) - 1)
+  view<int> member;        // disk indices, ascending within a body: a fixed order of the sums
+  view<Vec2> offset;       // per member slot: the member's centre from the body's, at rotation 0
+
+  Bodies() = default;
+  Bodies(std::size_t bodies, std::size_t members)
+      : position("body_position", bodies), velocity("body_velocity", bodies), force("body_force", bodies),
+        mass("body_mass", bodies), inertia("body_inertia", bodies), rotation("body_rotation", bodies),
+        angular_velocity("body_angular_velocity", bodies), moment("body_moment", bodies),
+        member_begin("body_member_begin", bodies + 1), member("body_member", members),
+        offset("body_member_offset", members) {}
+
+  std::size_t size() const { return position.extent(0); }
+};
+
+// The offset `o` turned by the angle `theta`.
+KOKKOS_INLINE_FUNCTION Vec2 rotated(Vec2 o, double theta) {
+  const double c = cos(theta), s = sin(theta);
+  return {c * o.x - s * o.y, s * o.x + c * o.y};
+}
+
+}  // namespace vrut
