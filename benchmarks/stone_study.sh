@@ -6,7 +6,8 @@
 #   control    a negligible change of it (stone E 55.0 against 55.5 GPa): how
 #              much of a paired change is chaos
 #   rigid-R    rigid stones, stone and wall springs R times the mastic's E1 t,
-#              5 % of critical damping; rigid-R-undamped without the dashpot
+#              5 % of critical damping; rigid-R-undamped without the dashpot,
+#              rigid-R-dZ with Z of critical
 # A row whose summary.json exists is not run again.
 #   Usage: stone_study.sh OUT_DIR "MIXES" SEEDS "ROWS" [vrut-rutting options...]
 #   e.g.   stone_study.sh out/stones "1 2 3" 1-8 "exact control rigid-1000 rigid-300 rigid-100 rigid-30" --width-mm 100
@@ -22,6 +23,7 @@ for mix in $mixes; do
       exact) args=() ;;
       control) args=(--aggregate-modulus-gpa 55.0) ;;
       rigid-*-undamped) r=${row#rigid-}; args=(--rigid-stones --stone-contact-ratio "${r%-undamped}" --stone-damping 0) ;;
+      rigid-*-d*) r=${row#rigid-}; args=(--rigid-stones --stone-contact-ratio "${r%-d*}" --stone-damping "${r#*-d}") ;;
       rigid-*) args=(--rigid-stones --stone-contact-ratio "${row#rigid-}" --stone-damping 0.05) ;;
       *) echo "unknown row $row" >&2; exit 2 ;;
     esac

@@ -35,6 +35,6 @@ for mix in $mixes; do
         m0 = median(ds0, n0); m = median(ds, n)
         printf "| %s# | %s | %.2f | %s | %s | %.0f | %+.0f | %.2f | %d | %s |\n", mix, row, rut / n, ci(sr, qr, n),
                ci(s45, q45, n), m, m - m0, nb / n, steps, wall
-      }' "$base" "$dir/seeds.csv"
+      }' "$base" - <"$dir/seeds.csv"  # the row from standard input: it may be the base itself
   done
 done

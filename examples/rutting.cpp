@@ -129,7 +129,7 @@ struct RunOptions {
   vrut::RuttingNumerics num;
   std::string backend = "openmp", out = "out/rutting", conversion = "seed", seeds_text;
   int threads = 0;
-  bool force = false;
+  bool force = false, exact_stones = false;
   double checkpoint_every = 0.0;
   double e1 = 0, eta1 = 0, e2 = 0, eta2 = 0, pressure_mpa = 0, wheel_width_mm = 0, travel_mm = 0, aggregate_gpa = 0;
 
@@ -144,6 +144,7 @@ struct RunOptions {
     mat.mastic = {e1 * 1e6, eta1 * 1e6, e2 * 1e6, eta2 * 1e6};
     mat.calibrated_conversion = conversion == "calibrated";
     mat.aggregate_modulus = aggregate_gpa * 1e9;
+    mat.rigid_stones = !exact_stones;
     wt.pressure = pressure_mpa * 1e6;
     wt.wheel_width = wheel_width_mm * 1e-3;
     wt.travel = travel_mm * 1e-3;
@@ -174,7 +175,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--mastic-aggregate-factor", mat.mastic_aggregate_factor,
                  "mastic-aggregate contacts get this times the mastic-mastic values")
       ->check(cli::finite_positive())->capture_default_str()->group("Materials");
-  app.add_option("--aggregate-modulus-gpa", o.aggregate_gpa, "aggregate Young's modulus")->check(cli::finite_positive())
+  app.add_option("--aggregate-modulus-gpa", o.aggregate_gpa, "aggregate Young's modulus (the stone springs 2 t E of --exact-stones)")->check(cli::finite_positive())
       ->capture_default_str()->group("Materials");
   app.add_option("--aggregate-nu", mat.aggregate_nu, "aggregate Poisson's ratio")->check(cli::finite_range(0.0, 0.5, true))
       ->capture_default_str()->group("Materials");
@@ -201,15 +202,15 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                "each pair of stones meets through its own film, sized from where its disks lie inside the stones' "
                "outlines (implies --film-between-stones; --film-gap is then unused, --film-endless refused)")
       ->group("Materials");  // no CLI excludes: config.ini holds every option, and reads back
-  app.add_flag("--rigid-stones", mat.rigid_stones,
-               "each aggregate moves as one rigid body; stones and walls meet on --stone-contact-ratio times the "
-               "mastic's spring E1 t, damped, instead of the stone's 2 t E (far fewer steps)")
+  app.add_flag("--exact-stones", o.exact_stones,
+               "the method's stones: bonded disks on the stone's 2 t E springs, walls as stiff, and the time step "
+               "from them (the default: rigid stones on --stone-contact-ratio times the mastic's spring, damped)")
       ->group("Numerics");
   app.add_option("--stone-contact-ratio", mat.stone_contact_ratio,
-                 "with --rigid-stones: the stone-stone and wall spring over the mastic's E1 t")
+                 "rigid stones: the stone-stone and wall spring over the mastic's E1 t")
       ->check(cli::finite_positive())->capture_default_str()->group("Numerics");
   app.add_option("--stone-damping", mat.stone_damping,
-                 "with --rigid-stones: the stone-stone and wall dashpot, a fraction of critical damping")
+                 "rigid stones: the stone-stone and wall dashpot, a fraction of critical damping")
       ->check(cli::finite_range(0.0, 0.99))->capture_default_str()->group("Numerics");
   app.add_option("--wall-friction", mat.wall_friction, "mould and plate friction")->check(cli::finite_range(0.0, 10.0))
       ->capture_default_str()->group("Materials");

@@ -46,8 +46,10 @@ vrut::RuttingNumerics short_numerics() {
 // The short test on the small section, in Space, stopped when stop() says so
 // and checkpointing to `checkpoints`.
 template <class Space>
-vrut::RuttingResult run_short(const std::function<bool()>& stop, vrut::CheckpointFile* checkpoints) {
-  return vrut::run_rutting<Space>(small_specimen(), short_test(), {}, short_numerics(), {}, {}, stop, checkpoints);
+vrut::RuttingResult run_short(const std::function<bool()>& stop, vrut::CheckpointFile* checkpoints,
+                              const vrut::RuttingMaterials& materials = {}) {
+  return vrut::run_rutting<Space>(small_specimen(), short_test(), materials, short_numerics(), {}, {}, stop,
+                                  checkpoints);
 }
 
 }  // namespace
@@ -69,6 +71,25 @@ TEMPLATE_LIST_TEST_CASE("a run stopped with a checkpoint and resumed ends bit fo
   const auto resumed = run_short<TestType>({}, &again);
   CHECK_FALSE(resumed.interrupted);
   vrut_test::require_same(resumed, whole);
+}
+
+// The method's exact stones (no bodies) checkpoint what they did before
+// rigid stones: stopped and resumed on the other backend, the run ends as
+// the one never stopped.
+TEST_CASE("a run with the method's exact stones resumes bit for bit", "[checkpoint]") {
+  vrut::RuttingMaterials exact;
+  exact.rigid_stones = false;
+  const auto whole = run_short<Kokkos::DefaultHostExecutionSpace>({}, nullptr, exact);
+  const vrut_test::ScratchDir scratch("vrut-test-checkpoint");
+  const auto path = scratch / "exact.vrut";
+  vrut::CheckpointFile first(path, 0.0, {});
+  int asked = 0;
+  const auto part = run_short<Kokkos::DefaultHostExecutionSpace>([&] { return ++asked == 11; }, &first, exact);
+  REQUIRE(part.interrupted);
+  auto again = vrut::CheckpointFile::resume(path, 0.0);
+  const auto resumed = run_short<Kokkos::Serial>({}, &again, exact);
+  vrut_test::require_same(resumed, whole);
+  CHECK(whole.deformation_final > 0.1e-3);
 }
 
 TEST_CASE("checkpoints written by the clock resume, on another backend too", "[checkpoint]") {

@@ -163,9 +163,11 @@ TEST_CASE("specimens must be contiguous and in order", "[core][ensemble]") {
   CHECK_THROWS_WITH(Sim(set, table), Catch::Contains("wrong length"));
 }
 
+namespace {
+
 // The whole rutting protocol over an ensemble of three different specimens
 // (two mixes, two seeds) against three single runs: every sample equal.
-TEST_CASE("an ensemble rutting run gives each specimen its single-run result", "[rutting][ensemble]") {
+void check_ensemble_against_single_runs(const vrut::RuttingMaterials& materials) {
   std::vector<vrut::Specimen> specimens;
   for (auto [mix, seed] : {std::pair<int, int>{2, 3}, {2, 4}, {3, 3}}) {
     vrut::SpecimenSettings s;
@@ -182,10 +184,10 @@ TEST_CASE("an ensemble rutting run gives each specimen its single-run result", "
   vrut::RuttingNumerics num;
   num.settle_steps = 1000;
   num.samples = 30;
-  const auto together = vrut::run_rutting_ensemble<Kokkos::DefaultHostExecutionSpace>(specimens, wt, {}, num);
+  const auto together = vrut::run_rutting_ensemble<Kokkos::DefaultHostExecutionSpace>(specimens, wt, materials, num);
   REQUIRE(together.size() == specimens.size());
   for (std::size_t e = 0; e < specimens.size(); ++e) {
-    const auto alone = vrut::run_rutting<Kokkos::DefaultHostExecutionSpace>(specimens[e], wt, {}, num);
+    const auto alone = vrut::run_rutting<Kokkos::DefaultHostExecutionSpace>(specimens[e], wt, materials, num);
     REQUIRE(alone.samples.size() == together[e].samples.size());
     std::size_t differing = 0;
     for (std::size_t k = 0; k < alone.samples.size(); ++k)
@@ -199,4 +201,20 @@ TEST_CASE("an ensemble rutting run gives each specimen its single-run result", "
     CHECK(alone.contacts == together[e].contacts);
     CHECK(alone.particles == together[e].particles);
   }
+}
+
+}  // namespace
+
+TEST_CASE("an ensemble rutting run gives each specimen its single-run result", "[rutting][ensemble]") {
+  check_ensemble_against_single_runs({});
+}
+
+// With rigid stones (the default) the bodies of every specimen are numbered
+// after the last one's, and each keeps to its own specimen; the method's
+// exact stones have no bodies.
+TEST_CASE("an ensemble with the method's exact stones gives each specimen its single-run result",
+          "[rutting][ensemble]") {
+  vrut::RuttingMaterials exact;
+  exact.rigid_stones = false;
+  check_ensemble_against_single_runs(exact);
 }
