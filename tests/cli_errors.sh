@@ -26,6 +26,12 @@ expect() {  # expect CODES PATTERN -- ARGS...
   fi
 }
 
+# Gradation files that vrut-specimen and vrut-rutting must refuse: one sieve,
+# a header alone, and one with no stone above 2.36 mm.
+printf '19,100\n' >"$work/one_sieve.csv"
+printf 'sieve_mm,percent_passing\n' >"$work/header_only.csv"
+printf 'sieve_mm,percent_passing\n19,100\n4.75,100\n2.36,100\n0.075,6\n' >"$work/no_stones.csv"
+
 expect "0" "usage" -- --help
 expect "1 2" "backend" -- --backend vulkan
 expect "1 2" "not expected|extra|unknown|following argument" -- --no-such-option 3
@@ -71,9 +77,6 @@ specimen)
   expect "1 2" "air-voids" -- --air-voids 0.5 --out d
   expect "1 2" "height" -- --height-mm -50 --out e
   expect "1 2" "cannot reach" -- --gradation 3 --height-mm 5 --out f
-  printf '19,100\n' >"$work/one_sieve.csv"
-  printf 'sieve_mm,percent_passing\n' >"$work/header_only.csv"
-  printf 'sieve_mm,percent_passing\n19,100\n4.75,100\n2.36,100\n0.075,6\n' >"$work/no_stones.csv"
   expect "2" "at least two sieves" -- --gradation one_sieve.csv --out g
   expect "2" "no sieve lines" -- --gradation header_only.csv --out h
   expect "2" "retains nothing on the 2.36" -- --gradation no_stones.csv --out i
@@ -113,9 +116,6 @@ rutting)
     for value in -0.1 0.5 nan inf; do expect "2" "^$option: " -- "$option" "$value" --out bad; done
   done
   expect "2" "must last longer than minute 45" -- --minutes 30 --out bad
-  printf 'sieve_mm,percent_passing\n19,100\n4.75,100\n2.36,100\n0.075,6\n' >"$work/no_stones.csv"
-  printf '19,100\n' >"$work/one_sieve.csv"
-  printf 'sieve_mm,percent_passing\n' >"$work/header_only.csv"
   expect "2" "retains nothing on the 2.36" -- --gradation no_stones.csv --out bad
   expect "2" "at least two sieves" -- --gradation one_sieve.csv --out bad
   expect "2" "no sieve lines" -- --gradation header_only.csv --out bad
