@@ -13,8 +13,8 @@ trap 'kill -9 $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
 cd "$work" || exit 1
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-# A small test (about 8 s on 2 cores, rigid stones at alpha_T 2e3): long enough that the signals come while it loads.
-small=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 2e3 --settle-steps 300)
+# A small test (about 5 s on 2 cores, rigid stones at alpha_T 4e3): long enough that the signals come while it loads.
+small=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 4e3 --settle-steps 300)
 
 # Waits (at most 60 s) until FILE exists or holds PATTERN.
 wait_for() {  # wait_for FILE [PATTERN]
