@@ -144,7 +144,8 @@ TEMPLATE_LIST_TEST_CASE("momentum and angular momentum survive a collision of tw
 
 // A body of seven disks (a hexagon) dropped on a floor, settled by local
 // damping: the floor carries its weight, 7 m g, and the body rests level.
-TEST_CASE("a rigid body resting on a wall weighs on it with its weight", "[bodies][physics]") {
+TEMPLATE_LIST_TEST_CASE("a rigid body resting on a wall weighs on it with its weight", "[bodies][physics]",
+                        vrut_test::ExecutionSpaces) {
   using namespace vrut;
   ParticleSet set;
   const double y0 = 0.003;
@@ -153,7 +154,7 @@ TEST_CASE("a rigid body resting on a wall weighs on it with its weight", "[bodie
     set.add(2.0 * r * std::cos(k * M_PI / 3.0), y0 + 2.0 * r * std::sin(k * M_PI / 3.0), r, rho, 0, 0);
   AssignmentTable<Linear> table;
   table.set_all(linear_params(1e6, 0.0, 0.0));
-  Simulation<Linear, Kokkos::DefaultHostExecutionSpace> sim(set, table, settings({0.0, -9.81}), {0.7});
+  Simulation<Linear, TestType> sim(set, table, settings({0.0, -9.81}), {0.7});
   const int floor = sim.add_wall(Wall{{-0.01, 0.0}, {0.01, 0.0}, {}}, linear_params(1e6, 0.0, 0.0));
   sim.run(40000, 0.1 * sim.critical_timestep());
   const double weight = 7.0 * rho * M_PI * r * r * t * 9.81;
@@ -171,7 +172,7 @@ namespace {
 // A stone of seven disks (a hexagon, two of them lowest) thrown at a soft wall: as one rigid
 // body, or as seven free disks bonded on springs of stiffness k_bond. Returns
 // the centre of mass's velocity after the bounce.
-template <bool rigid>
+template <bool rigid, class Space>
 vrut::Vec2 bounce(double k_wall, double k_bond) {
   using namespace vrut;
   ParticleSet set;
@@ -181,7 +182,7 @@ vrut::Vec2 bounce(double k_wall, double k_bond) {
     set.add(2.0 * r * std::cos(k * M_PI / 3.0), 0.004 + 2.0 * r * std::sin(k * M_PI / 3.0), r, rho, 0, body);
   AssignmentTable<LinearBonded> table;
   table.set_all(linear_bonded_params(k_bond, 0.4 * k_bond, 0.5, 1e30, 1e30));
-  Simulation<LinearBonded, Kokkos::DefaultHostExecutionSpace> sim(set, table, settings(), {0.0});
+  Simulation<LinearBonded, Space> sim(set, table, settings(), {0.0});
   if (!rigid) sim.bond_touching_contacts(1e-12);
   // A frictionless floor, met obliquely: the stone comes down at 1 m/s and along it at 0.5 m/s.
   sim.add_wall(Wall{{-0.05, 0.0}, {0.05, 0.0}, {}}, linear_params(k_wall, 0.0, 0.0));
@@ -213,16 +214,17 @@ vrut::Vec2 bounce(double k_wall, double k_bond) {
 // are within a factor 7). So at k_wall / k_bond = 1e-2 and 1e-3 the
 // difference is at most (k_wall / k_bond)^(3/2) of the impact speed, and
 // ten times stiffer bonds bring it 10^(3/2) = 32 times closer (asked: 20).
-TEST_CASE("a rigid stone is the stiff limit of its bonded-disk stone", "[bodies][physics]") {
+TEMPLATE_LIST_TEST_CASE("a rigid stone is the stiff limit of its bonded-disk stone", "[bodies][physics]",
+                        vrut_test::ExecutionSpaces) {
   const double k_wall = 1e5;
-  const vrut::Vec2 rigid = bounce<true>(k_wall, 1e8);
+  const vrut::Vec2 rigid = bounce<true, TestType>(k_wall, 1e8);
   // The rigid bounce itself: a frictionless elastic floor gives the normal
   // speed back and leaves the tangential one.
   CHECK(rigid.y == Approx(1.0).epsilon(1e-3));
   CHECK(rigid.x == Approx(0.5).epsilon(1e-9));
   double previous = 0.0;
   for (double k_bond : {1e7, 1e8}) {
-    const vrut::Vec2 bonded = bounce<false>(k_wall, k_bond);
+    const vrut::Vec2 bonded = bounce<false, TestType>(k_wall, k_bond);
     const double difference = vrut::norm(bonded - rigid) / 1.0;  // of the impact speed, 1 m/s
     INFO("k_wall / k_bond " << k_wall / k_bond << ": bonded stone rebounds at (" << bonded.x << ", " << bonded.y
                             << ") m/s, rigid at (" << rigid.x << ", " << rigid.y << "), difference " << difference);
