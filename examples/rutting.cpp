@@ -52,7 +52,7 @@ void snapshot_panel(draw::Canvas& c, const vrut::Specimen& sp, const vrut::Rutti
 // rut_forming.png: the specimen at 20, 40 and 60 min.
 void rut_forming_png(const vrut::Specimen& sp, const vrut::RuttingResult& res, double test_minutes,
                      const std::string& path) {
-  const double W = sp.settings.placement.width, H = sp.settings.placement.height;
+  const double W = sp.width, H = sp.height;
   const double panel = H + 12.0;  // a strip for the label above each panel
   draw::Canvas c(W, 3 * panel, 5.0);
   const double plate_top = res.plate_y_final * 1e3;
@@ -75,7 +75,7 @@ void rut_forming_png(const vrut::Specimen& sp, const vrut::RuttingResult& res, d
 
 // displacement.png: the displacement field at the end, colour and arrows.
 void displacement_png(const vrut::Specimen& sp, const vrut::RuttingResult& res, const std::string& path) {
-  const double W = sp.settings.placement.width, H = sp.settings.placement.height;
+  const double W = sp.width, H = sp.height;
   const auto& end = res.snapshots.back();
   draw::Canvas c(W, H + 12.0, 6.0);
   double dmax = 1e-12;

@@ -108,9 +108,8 @@ class Canvas {
 // The specimen as generated: aggregates in stone colours, mastic dark grey,
 // air voids white, polygon outlines thin.
 inline void specimen_png(const vrut::Specimen& sp, const std::string& path, double scale = 6.0) {
-  const auto& s = sp.settings.placement;
-  Canvas c(s.width, s.height, scale);
-  c.rectangle(0, 0, s.width, s.height, {1, 1, 1});
+  Canvas c(sp.width, sp.height, scale);
+  c.rectangle(0, 0, sp.width, sp.height, {1, 1, 1});
   const double r = sp.disks.radius;
   for (std::size_t i = 0; i < sp.disks.centers.size(); ++i) {
     const int a = sp.disks.aggregate[i];

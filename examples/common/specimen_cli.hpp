@@ -74,7 +74,7 @@ inline nlohmann::json specimen_summary(const vrut::Specimen& sp) {
   nlohmann::json j;
   j["gradation"] = sp.settings.gradation.name;
   j["seed"] = sp.settings.seed;
-  j["section_mm"] = {sp.settings.placement.width, sp.settings.placement.height};
+  j["section_mm"] = {sp.width, sp.height};
   nlohmann::json q = nlohmann::json::array();
   for (const auto& [sieve, passing] : sp.stereology.quantity_gradation())
     q.push_back({{"sieve_mm", sieve}, {"percent_passing", passing}});

@@ -378,17 +378,16 @@ template <class Sim>
 void check_inside_moulds(Sim& sim, const std::vector<Specimen>& specimens, long step, double dt) {
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
   for (int e = 0; e < static_cast<int>(specimens.size()); ++e) {
-    const double w = specimens[e].settings.placement.width * 1e-3, h = specimens[e].settings.placement.height * 1e-3;
+    const double w = specimens[e].width * 1e-3, h = specimens[e].height * 1e-3;
     const double r = specimens[e].disks.radius * 1e-3;
     const auto [first, last] = sim.specimen_range(e);
     for (int i = first; i < last; ++i) {
       const Vec2 p = x(i);
       if (!(p.x > -r && p.x < w + r && p.y > -r && p.y < 2.0 * h)) {
-        char where[160];
-        std::snprintf(where, sizeof where, "disk %d of specimen %d (seed %llu) is at (%.4g, %.4g) mm, outside its %g x %g mm mould",
-                      i - first, e, static_cast<unsigned long long>(specimens[e].settings.seed), p.x * 1e3,
-                      p.y * 1e3, w * 1e3, h * 1e3);
-        char text[400];
+        char where[400];
+        std::snprintf(where, sizeof where, "disk %d of specimen %d (%.200s) is at (%.4g, %.4g) mm, outside its %g x %g mm mould",
+                      i - first, e, specimens[e].name.c_str(), p.x * 1e3, p.y * 1e3, w * 1e3, h * 1e3);
+        char text[700];
         std::snprintf(text, sizeof text,
                       "vrut: the rutting run became unstable by loading step %ld: %s. The time step is %.3g of "
                       "sqrt(m_min / k_max); lower --timestep-safety (default 0.3).",
@@ -458,7 +457,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   if (!(num.timestep_safety > 0.0 && num.timestep_safety <= 1.0)) throw std::invalid_argument("time-step safety must lie in (0, 1]");
   if (num.samples < 10) throw std::invalid_argument("at least 10 samples");
   const int count = static_cast<int>(specimens.size());
-  for (const Specimen& sp : specimens) wt.validate(sp.settings.placement.width * 1e-3);
+  for (const Specimen& sp : specimens) wt.validate(sp.width * 1e-3);
   const double t = wt.wheel_width;
   // Where stones meet through a film, each stone's disks get its colour's
   // group; the margin (two disk diameters) covers how far neighbours close in.
@@ -502,7 +501,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   const auto wall_law = rutting_wall_params(mat, t);
   const double k_wall = wall_law.normal.stiffness;
   for (int e = 0; e < count; ++e) {
-    const double width = specimens[e].settings.placement.width * 1e-3, height = specimens[e].settings.placement.height * 1e-3;
+    const double width = specimens[e].width * 1e-3, height = specimens[e].height * 1e-3;
     sim.add_wall(Wall{{0.0, 0.0}, {width, 0.0}, {}}, wall_law, {}, e);
     sim.add_wall(Wall{{0.0, 2.0 * height}, {0.0, 0.0}, {}}, wall_law, {}, e);
     sim.add_wall(Wall{{width, 0.0}, {width, 2.0 * height}, {}}, wall_law, {}, e);
@@ -531,7 +530,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   for (int e = 0; e < count; ++e) {
     RuttingResult& res = results[e];
     res.dt = dt;
-    const double width = specimens[e].settings.placement.width * 1e-3;
+    const double width = specimens[e].width * 1e-3;
     res.plate_x0 = 0.5 * (width - l);
     res.plate_x1 = 0.5 * (width + l);
     const double r = specimens[e].disks.radius * 1e-3;

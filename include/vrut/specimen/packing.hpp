@@ -18,17 +18,21 @@ struct DiskPacking {
   std::vector<Point> centers;
   std::vector<int> aggregate;                // index into Placement::aggregates, -1 for mastic
   std::vector<std::pair<int, int>> bonds;    // initially touching pairs, not across two aggregates
-  int removed_for_voids = 0;
-  double air_void_target = 0.0, air_void_achieved = 0.0;
+  int removed_for_voids = 0;                 // mastic disks deleted at random for the air voids
+  int void_sites = 0;                        // sites the source itself marked void (an image's pores)
+  double air_void_target = 0.0, air_void_achieved = 0.0;  // the random voids' fraction of the section
 };
 
+// What a lattice site holds, by its centre: a stone's index (>= 0), mastic,
+// or nothing (a void the source shows, such as a pore in an image).
+constexpr int mastic_site = -1, void_site = -2;
+
 // Disks of one radius on a hexagonal close packing: rows y = r + k sqrt(3) r,
-// odd rows shifted by r; a disk whose centre lies inside an aggregate polygon
-// belongs to it. Then mastic disks are deleted at random until the deleted
-// area is `air_voids` of the section.
-template <class Rng>
-DiskPacking pack_disks(const Placement& placement, double width, double height, double radius, double air_voids,
-                       Rng& rng) {
+// odd rows shifted by r; `site_of(centre)` says what each site holds (a
+// stone, mastic_site or void_site). Then mastic disks are deleted at random
+// until the deleted area is `air_voids` of the section.
+template <class SiteOf, class Rng>
+DiskPacking pack_disks_by(SiteOf site_of, double width, double height, double radius, double air_voids, Rng& rng) {
   if (!(radius > 0.0)) throw std::invalid_argument("disk radius must be positive");
   if (!(air_voids >= 0.0 && air_voids <= 0.3))
     throw std::invalid_argument("air void fraction must lie within [0, 0.3], got " + std::to_string(air_voids));
@@ -36,10 +40,6 @@ DiskPacking pack_disks(const Placement& placement, double width, double height, 
   const int rows = static_cast<int>(std::floor((height - 2.0 * radius) / dy)) + 1;
   const int columns = static_cast<int>(std::floor((width - 2.0 * radius) / (2.0 * radius))) + 1;
   if (rows < 1 || columns < 1) throw std::invalid_argument("the disks are larger than the section");
-
-  detail::AggregateGrid grid(width, height, 4.0);
-  for (std::size_t a = 0; a < placement.aggregates.size(); ++a)
-    grid.insert(static_cast<int>(a), detail::bounds(placement.aggregates[a].polygon));
 
   // Lattice slot -> disk (or -1 where the odd row has no room for its last disk).
   std::vector<int> slot(static_cast<std::size_t>(rows) * columns, -1);
@@ -49,21 +49,15 @@ DiskPacking pack_disks(const Placement& placement, double width, double height, 
     for (int col = 0; col < columns; ++col) {
       const Point c(radius + (row % 2 ? radius : 0.0) + 2.0 * radius * col, radius + dy * row);
       if (c.x() + radius > width + 1e-9) continue;
-      int in = -1;
-      const Eigen::AlignedBox2d box(c, c);
-      grid.any_in_box(box, [&](int id) {
-        if (point_in_polygon(placement.aggregates[id].polygon, c)) in = id;
-        return in >= 0;
-      });
       slot[static_cast<std::size_t>(row) * columns + col] = static_cast<int>(centers.size());
       centers.push_back(c);
-      owner.push_back(in);
+      owner.push_back(site_of(c));
     }
 
   // Air voids: a random choice of mastic disks.
   std::vector<int> mastic;
   for (std::size_t i = 0; i < centers.size(); ++i)
-    if (owner[i] < 0) mastic.push_back(static_cast<int>(i));
+    if (owner[i] == mastic_site) mastic.push_back(static_cast<int>(i));
   const double disk_area = M_PI * radius * radius;
   const int remove = static_cast<int>(std::lround(air_voids * width * height / disk_area));
   if (remove > static_cast<int>(mastic.size()))
@@ -75,10 +69,14 @@ DiskPacking pack_disks(const Placement& placement, double width, double height, 
   }
   std::vector<char> gone(centers.size(), 0);
   for (int k = 0; k < remove; ++k) gone[mastic[k]] = 1;
+  int void_sites = 0;
+  for (std::size_t i = 0; i < centers.size(); ++i)
+    if (owner[i] == void_site) gone[i] = 1, ++void_sites;
 
   DiskPacking out;
   out.radius = radius;
   out.removed_for_voids = remove;
+  out.void_sites = void_sites;
   out.air_void_target = air_voids;
   out.air_void_achieved = remove * disk_area / (width * height);
   std::vector<int> index(centers.size(), -1);
@@ -108,6 +106,26 @@ DiskPacking pack_disks(const Placement& placement, double width, double height, 
     }
   std::sort(out.bonds.begin(), out.bonds.end());
   return out;
+}
+
+// The generator's packing: a site belongs to the placed aggregate whose
+// polygon holds its centre, else to the mastic.
+template <class Rng>
+DiskPacking pack_disks(const Placement& placement, double width, double height, double radius, double air_voids,
+                       Rng& rng) {
+  detail::AggregateGrid grid(width, height, 4.0);
+  for (std::size_t a = 0; a < placement.aggregates.size(); ++a)
+    grid.insert(static_cast<int>(a), detail::bounds(placement.aggregates[a].polygon));
+  auto site_of = [&](const Point& c) {
+    int in = mastic_site;
+    const Eigen::AlignedBox2d box(c, c);
+    grid.any_in_box(box, [&](int id) {
+      if (point_in_polygon(placement.aggregates[id].polygon, c)) in = id;
+      return in >= 0;
+    });
+    return in;
+  };
+  return pack_disks_by(site_of, width, height, radius, air_voids, rng);
 }
 
 }  // namespace vrut

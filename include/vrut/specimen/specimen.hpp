@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <random>
 #include <stdexcept>
+#include <string>
 
 namespace vrut {
 
@@ -21,7 +22,13 @@ struct SpecimenSettings {
   std::uint64_t seed = 1;
 };
 
+// A specimen as the protocols see it: the section's size, the stones (their
+// outlines) and the disks. A source fills it: the generator here, or an image
+// (specimen/image.hpp). `settings` and `stereology` are the generator's, and
+// hold the defaults for a specimen from an image.
 struct Specimen {
+  double width = 0.0, height = 0.0;  // the section, mm
+  std::string name;                  // what it is, for messages: "seed 3", "image core.png"
   SpecimenSettings settings;
   Stereology stereology;
   Placement placement;
@@ -37,6 +44,9 @@ struct Specimen {
 inline Specimen generate_specimen(const SpecimenSettings& s) {
   validate_gradation(s.gradation, [&](std::size_t i) { return s.gradation.name + " row " + std::to_string(i + 1); });
   Specimen out;
+  out.width = s.placement.width;
+  out.height = s.placement.height;
+  out.name = "seed " + std::to_string(s.seed);
   out.settings = s;
   out.stereology = stereology(s.gradation, s.mix);
   // One stream for the aggregates, one for the voids: changing the void
