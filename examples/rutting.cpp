@@ -2,6 +2,7 @@
 // its gradation and binder properties to the rut depth and dynamic stability.
 #include "common/cli.hpp"
 #include "common/draw.hpp"
+#include "common/image_cli.hpp"
 #include "common/ranks.hpp"
 #include "common/seeds.hpp"
 #include "common/specimen_cli.hpp"
@@ -124,6 +125,8 @@ nlohmann::json statistics_json(const vrut::SampleStatistics& s) {
 // the arguments the checkpoint stored.
 struct RunOptions {
   specimen_cli::SpecimenOptions so;
+  image_cli::ImageOptions io;
+  bool width_given = false, voids_given = false, seed_given = false;  // for --image: what was typed
   vrut::WheelTracking wt;
   vrut::RuttingMaterials mat;
   vrut::RuttingNumerics num;
@@ -162,6 +165,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.set_config("--config", "", "read options from this file (INI/TOML, as written to DIR/config.ini)");
   app.allow_config_extras(false);  // an unknown key in a config file is an error
   add_specimen_options(app, o.so);
+  image_cli::add_image_options(app, o.io, true);
   app.add_option("--seeds", o.seeds_text,
                  "an ensemble: specimens of these seeds, run side by side, e.g. 1-16 or 1,4,9 (instead of --seed)");
   app.add_option("--E1", o.e1, "mastic Maxwell modulus at 60 C, MPa")->check(cli::finite_positive())->capture_default_str()->group("Materials");
@@ -272,6 +276,9 @@ RunOptions options_to_resume(const CLI::App& command_line, const RunOptions& giv
       if (name == "--threads") o.threads = given.threads;
       if (name == "--checkpoint-every") o.checkpoint_every = given.checkpoint_every;
     }
+  o.width_given = stored.count("--width-mm") > 0;
+  o.voids_given = stored.count("--air-voids") > 0;
+  o.seed_given = stored.count("--seed") > 0;
   o.force = true;  // the folder is this run's own
   return o;
 }
@@ -287,6 +294,9 @@ int main(int argc, char** argv) {
   app.add_option("--resume", resume, "go on with the run whose checkpoint is in this folder, with its options")
       ->group("Runs")->configurable(false);
   if (const int code = cli::parse(app, argc, argv); code >= 0) return code;
+  given.width_given = app.count("--width-mm") > 0;
+  given.voids_given = app.count("--air-voids") > 0;
+  given.seed_given = app.count("--seed") > 0;
 
   const int code = cli::guarded([&] {
     namespace fs = std::filesystem;
@@ -322,18 +332,40 @@ int main(int argc, char** argv) {
     const auto& mat = o.mat;
     const auto& num = o.num;
     const std::string &backend = o.backend, &out = o.out, &conversion = o.conversion, &seeds_text = o.seeds_text;
-    std::optional<vrut::OutputDir> output;  // rank 0 writes the results
-    if (session.root()) output.emplace(out, o.force);
+    const std::vector<std::string>& images = o.io.images;
+    const bool from_images = !images.empty();
+    if (from_images && (!seeds_text.empty() || o.seed_given))
+      throw std::invalid_argument("--image gives the specimens: --seed and --seeds do not go with it");
     vrut::SpecimenSettings ss = to_settings(so);
     // Everything checkable is checked before the specimen is made.
     mat.mastic.validate();
     vrut::validate_poisson(mat.mastic_nu);
     vrut::validate_poisson(mat.aggregate_nu);
     vrut::TimeShift{num.shift};
-    wt.validate(ss.placement.width * 1e-3);
-    const std::vector<std::uint64_t> seeds =
-        seeds_text.empty() ? std::vector<std::uint64_t>{so.seed} : cli::parse_seed_list(seeds_text);
-    const bool ensemble = !seeds_text.empty();
+    if (!from_images) wt.validate(ss.placement.width * 1e-3);
+    // The images are read, and their specimens made and checked, before the
+    // output folder is: a bad image leaves nothing behind.
+    std::vector<vrut::Specimen> image_specimens;
+    if (from_images) {
+      const vrut::ImageSettings is = image_cli::to_settings(o.io, so, o.width_given, o.voids_given);
+      for (const std::string& path : images) {
+        image_specimens.push_back(vrut::specimen_from_image(path, is));
+        try {
+          wt.validate(image_specimens.back().width * 1e-3);
+        } catch (const std::invalid_argument& e) {
+          throw std::invalid_argument("image " + path + ": " + e.what());
+        }
+      }
+    }
+    std::optional<vrut::OutputDir> output;  // rank 0 writes the results
+    if (session.root()) output.emplace(out, o.force);
+    // An ensemble of images is numbered 1 .. N in the order given, as seeds are.
+    std::vector<std::uint64_t> seeds;
+    if (from_images)
+      for (std::size_t k = 1; k <= images.size(); ++k) seeds.push_back(k);
+    else
+      seeds = seeds_text.empty() ? std::vector<std::uint64_t>{so.seed} : cli::parse_seed_list(seeds_text);
+    const bool ensemble = !seeds_text.empty() || images.size() > 1;
     if (seeds.size() < static_cast<std::size_t>(session.size()))
       throw std::invalid_argument(std::to_string(session.size()) + " MPI ranks for " + std::to_string(seeds.size()) +
                                   " seed(s): give at least one seed per rank (--seeds)");
@@ -342,10 +374,17 @@ int main(int argc, char** argv) {
     const std::vector<std::uint64_t> my_seeds(seeds.begin() + first_seed, seeds.begin() + last_seed);
     // Measured: 1.7 kB a disk in the run (16k to 66k disks), and a checkpoint
     // of 1.2 kB a disk is built in memory before it is written.
-    vrut::require_memory(my_seeds.size() * vrut::hex_disks_in(so.width_mm, so.height_mm, so.disk_radius_mm), 3072.0,
-                         64e6, my_seeds.size() > 1 ? "this ensemble" : "this run");
+    std::size_t planned_disks = 0;
+    for (std::uint64_t seed : my_seeds)
+      planned_disks += from_images ? image_specimens[seed - 1].disks.centers.size()
+                                   : vrut::hex_disks_in(so.width_mm, so.height_mm, so.disk_radius_mm);
+    vrut::require_memory(planned_disks, 3072.0, 64e6, my_seeds.size() > 1 ? "this ensemble" : "this run");
     std::vector<vrut::Specimen> specimens;
     for (std::uint64_t seed : my_seeds) {
+      if (from_images) {
+        specimens.push_back(image_specimens[seed - 1]);
+        continue;
+      }
       ss.seed = seed;
       try {
         specimens.push_back(vrut::generate_specimen(ss));
@@ -361,8 +400,9 @@ int main(int argc, char** argv) {
     for (const auto& sp : specimens) my_disks += sp.disks.centers.size();
     const vrut::Specimen& sp = specimens.front();
     if (session.root())
-      std::fprintf(stderr, "specimen%s: gradation %s, %zu disks%s, %zu aggregates%s; plate %.2f mm, loading %.1f s (%.4g s reduced)\n",
-                   ensemble ? "s" : "", ss.gradation.name.c_str(), my_disks,
+      std::fprintf(stderr, "specimen%s: %s, %zu disks%s, %zu aggregates%s; plate %.2f mm, loading %.1f s (%.4g s reduced)\n",
+                   ensemble ? "s" : "", from_images ? (images.size() > 1 ? "from images" : sp.name.c_str())
+                                                    : ("gradation " + ss.gradation.name).c_str(), my_disks,
                    session.size() > 1 ? (" on rank 0 of " + std::to_string(session.size())).c_str() : (ensemble ? " in all" : ""),
                    sp.placement.aggregates.size(), ensemble ? " in the first" : "",
                    wt.contact_length() * 1e3, wt.loading_time(), wt.loading_time() / num.shift);
@@ -491,20 +531,25 @@ int main(int argc, char** argv) {
       per_seed.precision(17);
       per_seed << "seed,disks,aggregates,aggregate_area_fraction,rut_depth_mm,deformation_45min_mm,"
                   "deformation_60min_mm,dynamic_stability_passes_per_mm,dynamic_stability_is_lower_bound,"
-                  "deformation_resolution_mm,stones,stone_pairs_touching,steps\n";
-      for (std::size_t e = 0; e < runs.size(); ++e)
+                  "deformation_resolution_mm,stones,stone_pairs_touching,steps"
+               << (from_images ? ",image\n" : "\n");
+      for (std::size_t e = 0; e < runs.size(); ++e) {
         per_seed << seeds[e] << ',' << runs[e].particles << ',' << facts[e].aggregates << ','
                  << facts[e].aggregate_area_fraction << ',' << runs[e].deformation_final * 1e3 << ','
                  << runs[e].deformation_at_ds_start * 1e3 << ',' << runs[e].deformation_final * 1e3 << ','
                  << runs[e].dynamic_stability << ',' << (runs[e].dynamic_stability_is_lower_bound ? 1 : 0) << ','
                  << runs[e].deformation_resolution * 1e3 << ',' << runs[e].stones << ','
-                 << runs[e].stone_pairs_touching << ',' << runs[e].steps << '\n';
+                 << runs[e].stone_pairs_touching << ',' << runs[e].steps;
+        if (from_images) per_seed << ',' << images[seeds[e] - 1];
+        per_seed << '\n';
+      }
       output->write_text("seeds.csv", per_seed.str());
     }
 
     nlohmann::json j;
     j["gradation"] = ss.gradation.name;
     j["seed"] = seeds.front();
+    if (from_images) j["images"] = images;  // specimen k (the "seed" k) is image k
     j["disk_radius_mm"] = sp.disks.radius;
     j["shift_factor"] = num.shift;
     j["conversion"] = conversion;

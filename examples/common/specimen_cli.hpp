@@ -72,6 +72,18 @@ inline vrut::SpecimenSettings to_settings(const SpecimenOptions& o) {
 
 inline nlohmann::json specimen_summary(const vrut::Specimen& sp) {
   nlohmann::json j;
+  if (sp.stereology.classes.empty()) {  // not generated: from an image
+    const std::size_t agg = sp.aggregate_disks();
+    j["source"] = sp.name;
+    j["section_mm"] = {sp.width, sp.height};
+    j["aggregate_count"] = sp.placement.aggregates.size();
+    j["aggregate_area_fraction"] = {{"achieved", sp.placement.achieved_fraction}};
+    j["disk_radius_mm"] = sp.disks.radius;
+    j["disks"] = {{"total", sp.disks.centers.size()}, {"aggregate", agg}, {"mastic", sp.disks.centers.size() - agg},
+                  {"void_sites", sp.disks.void_sites}, {"removed_for_air_voids", sp.disks.removed_for_voids},
+                  {"bonds", sp.disks.bonds.size()}};
+    return j;
+  }
   j["gradation"] = sp.settings.gradation.name;
   j["seed"] = sp.settings.seed;
   j["section_mm"] = {sp.width, sp.height};
