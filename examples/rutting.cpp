@@ -276,6 +276,7 @@ RunOptions options_to_resume(const CLI::App& command_line, const RunOptions& giv
       if (name == "--threads") o.threads = given.threads;
       if (name == "--checkpoint-every") o.checkpoint_every = given.checkpoint_every;
     }
+  o.io.images = image_cli::given_images(o.io);
   o.width_given = stored.count("--width-mm") > 0;
   o.voids_given = stored.count("--air-voids") > 0;
   o.seed_given = stored.count("--seed") > 0;
@@ -294,6 +295,7 @@ int main(int argc, char** argv) {
   app.add_option("--resume", resume, "go on with the run whose checkpoint is in this folder, with its options")
       ->group("Runs")->configurable(false);
   if (const int code = cli::parse(app, argc, argv); code >= 0) return code;
+  given.io.images = image_cli::given_images(given.io);
   given.width_given = app.count("--width-mm") > 0;
   given.voids_given = app.count("--air-voids") > 0;
   given.seed_given = app.count("--seed") > 0;
@@ -635,13 +637,15 @@ int main(int argc, char** argv) {
                     wall_seconds, j["particle_steps_per_second"].get<double>());
       return std::string(text);
     }();
+    const std::string what_was_run = from_images ? (images.size() > 1 ? "images" : "image " + images.front())
+                                                 : "gradation " + ss.gradation.name;
     if (ensemble) {
       const auto& r = summary.rut_depth;
       const auto& d = summary.dynamic_stability;
       const bool any_bound = summary.dynamic_stability_lower_bounds > 0;
-      std::printf("gradation %s, %d specimens: rut depth %.2f mm at %.0f min (sd %.2f, 95 %% CI %.2f to %.2f), "
+      std::printf("%s, %d specimens: rut depth %.2f mm at %.0f min (sd %.2f, 95 %% CI %.2f to %.2f), "
                   "dynamic stability: mean %s (95 %% CI %s), median %s, of the mean curve %s passes/mm",
-                  ss.gradation.name.c_str(), r.n, r.mean, wt.minutes, r.sd, r.ci_low, r.ci_high,
+                  what_was_run.c_str(), r.n, r.mean, wt.minutes, r.sd, r.ci_low, r.ci_high,
                   ds_text(d.mean, any_bound).c_str(),
                   any_bound ? "not known" : (ds_text(d.ci_low, false) + " to " + ds_text(d.ci_high, false)).c_str(),
                   ds_text(d.median, summary.dynamic_stability_median_is_lower_bound).c_str(),
@@ -652,8 +656,8 @@ int main(int argc, char** argv) {
                     summary.dynamic_stability_lower_bounds, r.n, wt.ds_from_minute, wt.minutes);
       std::printf(" (%s)\nresults in %s\n", speed.c_str(), out.c_str());
     } else {
-      std::printf("gradation %s: rut depth %.2f mm at %.0f min, dynamic stability %s passes/mm",
-                  ss.gradation.name.c_str(), res.deformation_final * 1e3, wt.minutes,
+      std::printf("%s: rut depth %.2f mm at %.0f min, dynamic stability %s passes/mm",
+                  what_was_run.c_str(), res.deformation_final * 1e3, wt.minutes,
                   ds_text(res.dynamic_stability, res.dynamic_stability_is_lower_bound).c_str());
       if (res.dynamic_stability_is_lower_bound)
         std::printf(" (from minute %.0f to %.0f the plate sank %.4f mm, less than the %.4f mm its curve resolves)",

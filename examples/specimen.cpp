@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", out, "output folder")->capture_default_str();
   app.add_flag("--force", force, "overwrite an existing output folder");
   if (const int code = cli::parse(app, argc, argv); code >= 0) return code;
+  io.images = image_cli::given_images(io);
   return cli::guarded([&] {
     if (io.images.size() > 1) throw std::invalid_argument("--image: one image at a time (vrut-rutting runs several)");
     if (!io.images.empty()) {

@@ -40,6 +40,29 @@ expect "1 2" "exists" -- --out taken
 # A folder that cannot be written is found before any work.
 expect "1 2" "cannot write the output folder" -- --out /dev/null/results
 
+# Images that vrut-specimen and vrut-rutting must refuse (exit 2, a message,
+# no output folder): a missing file, an empty one, text named .png, a 1 x 1
+# image, an all-black one, and a pixel larger than a disk (a wrong scale).
+# PGM files, which OpenCV reads, are written here byte by byte.
+: >"$work/empty.png"
+echo "not an image" >"$work/text.png"
+printf 'P5\n1 1\n255\n\200' >"$work/one_pixel.pgm"
+{ printf 'P5\n100 100\n255\n'; head -c 10000 /dev/zero; } >"$work/black.pgm"
+# 200 x 100 pixels: black mastic above, grey stone below (20 x 10 mm at 0.1 mm).
+{ printf 'P5\n200 100\n255\n'; head -c 10000 /dev/zero; head -c 10000 /dev/zero | tr '\0' '\200'; } >"$work/narrow.pgm"
+bad_images() {  # bad_images: every refusal of a bad image
+  expect "2" "--image.*(not exist|no such)" -- --image no_such.png --mm-per-pixel 0.1 --out img1
+  expect "2" "cannot read the image" -- --image empty.png --mm-per-pixel 0.1 --out img2
+  expect "2" "cannot read the image" -- --image text.png --mm-per-pixel 0.1 --out img3
+  expect "2" "1 x 1 pixels: too small" -- --image one_pixel.pgm --mm-per-pixel 0.1 --out img4
+  expect "2" "no stone in the image" -- --image black.pgm --mm-per-pixel 0.1 --out img5
+  expect "2" "smaller than a pixel.*scale" -- --image narrow.pgm --mm-per-pixel 2 --phases mastic,stone --out img6
+  expect "2" "needs a scale" -- --image narrow.pgm --phases mastic,stone --out img7
+  for d in img1 img2 img3 img4 img5 img6 img7; do
+    [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after a bad image"; failures=$((failures + 1)); }
+  done
+}
+
 case $which in
 demo)
   expect "1 2" "columns" -- --columns -5
@@ -90,12 +113,33 @@ specimen)
     if ! cmp -s "$work/one/$f" "$work/two/$f"; then echo "FAIL: $f differs between two runs"; failures=$((failures + 1)); fi
   done
   grep -q '"quantity_gradation"' "$work/one/specimen.json" || { echo "FAIL: no quantity_gradation"; failures=$((failures + 1)); }
+  bad_images
+  # A generated specimen's section.png, read back: the stones' area fraction
+  # within 0.01 of the generator's (test_image.cpp checks stone by stone).
+  expect "0" "stones.*of the section" -- --image one/section.png --mm-per-pixel 0.1 --phases mastic,stone,void \
+    --gradation 3 --out from_image
+  for f in segmented.png specimen.png specimen.json specimen.vtk; do
+    [[ -s "$work/from_image/$f" ]] || { echo "FAIL: no $f from an image"; failures=$((failures + 1)); }
+  done
+  generated=$(grep -A2 '"achieved"' "$work/one/specimen.json" | sed -n 's/.*"achieved": \([0-9.]*\).*/\1/p' | head -n 1)
+  read_back=$(sed -n 's/.*"stone": \([0-9.]*\).*/\1/p' "$work/from_image/specimen.json" | head -n 1)
+  if awk -v a="$generated" -v b="$read_back" 'BEGIN { d = a - b; exit !(a > 0 && (d < 0 ? -d : d) <= 0.01) }'; then
+    echo "ok:   the image's stone fraction $read_back, the generator's $generated"
+  else echo "FAIL: stone fraction from the image $read_back, generated $generated"; failures=$((failures + 1)); fi
+  grep -q '"gradation_percent_passing"' "$work/from_image/specimen.json" ||
+    { echo "FAIL: no gradation beside the image's quantity gradation"; failures=$((failures + 1)); }
   ;;
 rutting)
   small=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300)
   expect "1 2" "cannot open" -- --gradation 7 --out a
   expect "1 2" "pressure" -- --pressure-mpa -0.7 --out b
   expect "1 2" "longer than the specimen" -- --width-mm 20 --out c
+  bad_images
+  expect "2" "narrow.pgm: .*longer than the specimen" -- --image narrow.pgm --mm-per-pixel 0.1 --phases mastic,stone --out img8
+  expect "2" "--seed and --seeds do not go with it" -- --image narrow.pgm --mm-per-pixel 0.1 --seed 4 --out img9
+  for d in img8 img9; do
+    [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after a bad image"; failures=$((failures + 1)); }
+  done
   printf 'gradation=2\nno_such_key=3\n' >"$work/extra.ini"
   expect "1 2" "no_such_key" -- --config extra.ini --out d
   printf 'seed=abc\n' >"$work/badvalue.ini"
@@ -211,6 +255,27 @@ rutting)
   done
   # ... and an ensemble of seeds 1 and 2 gives seed 1 the curve of its single run (run1).
   [[ -n ${VRUT_ERRORS_ONLY:-} ]] && { echo "$failures failure(s)"; exit $((failures > 0)); }
+  # The rutting test on images: 60 x 30 mm at 0.1 mm per pixel, square 3 mm
+  # stones (grey) in rows in mastic (black), the same image twice as an
+  # ensemble: two specimens, each with the curve of the other.
+  {
+    printf 'P5\n600 300\n255\n'
+    for band in 0 1 2 3 4 5 6 7 8 9; do
+      for _ in $(seq 30); do
+        if ((band % 2)); then
+          for _ in $(seq 10); do head -c 30 /dev/zero; head -c 30 /dev/zero | tr '\0' '\200'; done
+        else head -c 600 /dev/zero; fi
+      done
+    done
+  } >"$work/blocks.pgm"
+  images=(--image blocks.pgm --image blocks.pgm --mm-per-pixel 0.1 --phases mastic,stone --disk-radius-mm 1 --shift 1e5
+          --settle-steps 300)
+  expect "0" "2 specimens: rut depth" -- "${images[@]}" --out from_images
+  if awk -F, 'NR == 2 { a = $5 } NR == 3 { b = $5; img = $NF } END { exit !(NR == 3 && a == b && img == "blocks.pgm") }' \
+       "$work/from_images/seeds.csv"; then
+    echo "ok:   two runs of one image give one rut, and seeds.csv names the image"
+  else echo "FAIL: seeds.csv of the images: $(cat "$work/from_images/seeds.csv")"; failures=$((failures + 1)); fi
+  grep -q '"images"' "$work/from_images/summary.json" || { echo "FAIL: summary.json names no images"; failures=$((failures + 1)); }
   expect "0" "2 specimens: rut depth" -- "${small[@]}" --seeds 1-2 --out ens
   for f in summary.json seeds.csv deformation.csv deformation.png specimen.png; do
     [[ -s "$work/ens/$f" ]] || { echo "FAIL: no ensemble $f"; failures=$((failures + 1)); }

@@ -33,9 +33,12 @@ inline void add_image_options(CLI::App& app, ImageOptions& o, bool several) {
                  several ? "a specimen from this image of a section (PNG, TIFF, JPEG); give it again for an "
                            "ensemble of images, run side by side (instead of --seed or --seeds)"
                          : "a specimen from this image of a section (PNG, TIFF, JPEG) instead of the generator")
-      ->check(CLI::ExistingFile)->group("Image");
-  app.add_option("--mm-per-pixel", o.mm_per_pixel, "the image's scale (or --width-mm: the section's width)")
-      ->check(cli::finite_range(1e-6, 1e3))->group("Image");
+      // A config file written by a run without images holds an empty one.
+      ->check(CLI::Validator([](std::string& path) { return path.empty() ? std::string() : CLI::ExistingFile(path); },
+                             "FILE"))
+      ->group("Image");
+  app.add_option("--mm-per-pixel", o.mm_per_pixel, "the image's scale (0: from --width-mm, the section's width)")
+      ->check(cli::finite_range(0.0, 1e3))->capture_default_str()->group("Image");
   app.add_option("--phases", o.phases,
                  "the image's phases from dark to bright: void,mastic,stone (a CT slice, the default), or any order "
                  "of two or three of them")
@@ -52,6 +55,14 @@ inline void add_image_options(CLI::App& app, ImageOptions& o, bool several) {
   app.add_option("--separation-depth-mm", o.separation_depth_mm,
                  "touching stones are told apart where the distance to the edge dips by more than this between them")
       ->check(cli::finite_range(0.0, 100.0))->capture_default_str()->group("Image");
+}
+
+// The images given, less the empty ones a config file may hold.
+inline std::vector<std::string> given_images(const ImageOptions& o) {
+  std::vector<std::string> out;
+  for (const auto& path : o.images)
+    if (!path.empty()) out.push_back(path);
+  return out;
 }
 
 inline std::vector<vrut::ImagePhase> parse_phases(const std::string& text) {

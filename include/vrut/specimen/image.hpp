@@ -219,7 +219,8 @@ inline SegmentedImage segment_image(const cv::Mat& image, const ImageSettings& s
       return order[further] == ImagePhase::stone ? s.stone_threshold : s.void_threshold;
     };
     if (n == 2) {
-      t[0] = given(0) >= 0 ? given(0) : static_cast<int>(cv::threshold(out.grey, cv::Mat(), 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU)) + 1;
+      cv::Mat unused;
+      t[0] = given(0) >= 0 ? given(0) : static_cast<int>(cv::threshold(out.grey, unused, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU)) + 1;
     } else {
       const auto otsu = detail::otsu_three_classes(out.grey);
       t[0] = given(0) >= 0 ? given(0) : otsu[0];
