@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # The CUDA build, checked on every run of the suite: Kokkos with CUDA for
-# sm_90 (scripts/setup_cuda.sh, built once and cached), then vrut-rutting and
-# the core benchmark compiled and linked with nvcc_wrapper. Between them they
-# hold the kernels of every law the rutting test uses (Burger's with film and
-# bond, the damped linear stones and walls, their choice) and of the linear
-# bonded law. Compiling needs no GPU. Without nvcc the test is skipped (77).
+# sm_90 (scripts/setup_cuda.sh, built once and cached), then vrut-rutting,
+# the core benchmark and the rigid-body tests compiled and linked with
+# nvcc_wrapper. Between them they hold the kernels of every law the rutting
+# test uses (Burger's with film and bond, the damped linear stones and walls,
+# their choice), of the linear bonded law, and of the bodies. Compiling needs no GPU. Without nvcc the test is skipped (77).
 #
 # The test binary is compiled too, and run, where a GPU is found
 # (nvidia-smi), or compiled only when VRUT_CUDA_TESTS=1: with nvcc it takes
@@ -24,7 +24,8 @@ cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS=-
   { cat "$build.configure.log"; echo "FAIL: configuring the CUDA build"; exit 1; }
 gpu=0
 nvidia-smi -L 2>/dev/null | grep -q '^GPU' && gpu=1
-targets=(vrut-rutting vrut-bench-core) exes=(examples/vrut-rutting benchmarks/vrut-bench-core)
+targets=(vrut-rutting vrut-bench-core vrut-tests-bodies)
+exes=(examples/vrut-rutting benchmarks/vrut-bench-core tests/vrut-tests-bodies)
 if [[ $gpu -eq 1 || ${VRUT_CUDA_TESTS:-0} == 1 ]]; then targets+=(vrut-tests) exes+=(tests/vrut-tests); fi
 # Eigen's headers warn under nvcc; only errors matter here.
 cmake --build "$build" --target "${targets[@]}" 2>&1 | grep -E "error|\[[0-9]+/[0-9]+\]"
