@@ -497,12 +497,15 @@ int main(int argc, char** argv) {
       high.push_back(summary.deformation_ci_high[k] * 1e3);
     }
     output->write_text("deformation.csv", csv.str());
+    // What was run, for the plot and the printout.
+    const std::string what_was_run = from_images ? (images.size() > 1 ? "images" : "image " + images.front())
+                                                 : "gradation " + ss.gradation.name;
     vrut::PlotSpec spec;
     spec.xlabel = "test time (min)";
     spec.ylabel = "deformation (mm)";
     std::vector<vrut::PlotSeries> series;
     if (ensemble) {
-      spec.title = "Virtual wheel-tracking test, gradation " + ss.gradation.name + ", " +
+      spec.title = "Virtual wheel-tracking test, " + what_was_run + ", " +
                    std::to_string(runs.size()) + " specimens";
       vrut::PlotSeries band{"95 % interval of the mean", minutes, low, "filledcurves fs transparent solid 0.3 lc rgb '#4477aa'"};
       band.y2 = high;
@@ -517,7 +520,7 @@ int main(int argc, char** argv) {
       }
       series.push_back({"mean", minutes, deformation, "lines lw 3 lc rgb '#223388'"});
     } else {
-      spec.title = "Virtual wheel-tracking test, gradation " + ss.gradation.name;
+      spec.title = "Virtual wheel-tracking test, " + what_was_run;
       series.push_back({"rut depth under the plate", minutes, deformation});
     }
     vrut::write_plot_png(output->file("deformation.png").string(), spec, series);
@@ -637,8 +640,6 @@ int main(int argc, char** argv) {
                     wall_seconds, j["particle_steps_per_second"].get<double>());
       return std::string(text);
     }();
-    const std::string what_was_run = from_images ? (images.size() > 1 ? "images" : "image " + images.front())
-                                                 : "gradation " + ss.gradation.name;
     if (ensemble) {
       const auto& r = summary.rut_depth;
       const auto& d = summary.dynamic_stability;
