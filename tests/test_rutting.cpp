@@ -14,12 +14,7 @@
 namespace {
 
 vrut::Specimen small_specimen() {
-  vrut::SpecimenSettings s;
-  s.placement.width = 60.0;
-  s.placement.height = 30.0;
-  s.disk_radius = 1.0;
-  s.seed = 3;
-  vrut::Specimen sp = vrut::generate_specimen(s);
+  vrut::Specimen sp = vrut::generate_specimen(vrut_test::small_section());
   vrut_test::check_polygons(sp);
   return sp;
 }
@@ -82,7 +77,7 @@ void check_sane_and_pinned(const vrut::RuttingMaterials& materials, const Pin& p
 // included, as frozen on mix 2# (validation.md), on a small section. Pinned
 // 2026-12-01, when rigid stones became the default.
 TEST_CASE("a small rutting test gives a sane deformation curve", "[rutting]") {
-  check_sane_and_pinned({}, {5.5522178150116641, 5.3719081596039633, 3493.9892629460101}, "defaults");
+  check_sane_and_pinned({}, {vrut_test::pinned_small_rut_mm, 5.3719081596039633, 3493.9892629460101}, "defaults");
 }
 
 // --exact-stones: the method's bonded-disk stones give today what they gave

@@ -313,11 +313,7 @@ inline SegmentedImage segment_image(const cv::Mat& image, const ImageSettings& s
 inline std::vector<Aggregate> stone_outlines(const SegmentedImage& seg) {
   const double px = seg.mm_per_pixel, height = seg.height_mm();
   std::vector<Aggregate> out(seg.stone_area_mm2.size());
-  std::vector<std::vector<cv::Point>> best(out.size());
-  std::vector<double> best_area(out.size(), -1.0);
-  cv::Mat one;
   // One pass per stone would be N full scans; the bounding boxes keep it local.
-  std::vector<cv::Rect> box(out.size(), cv::Rect());
   std::vector<std::array<int, 4>> ext(out.size(), {1 << 30, 1 << 30, -1, -1});
   for (int r = 0; r < seg.labels.rows; ++r)
     for (int c = 0; c < seg.labels.cols; ++c) {
