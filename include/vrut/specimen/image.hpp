@@ -13,7 +13,12 @@
 //     distance's maxima deeper than `separation_depth_mm` (an h-maxima
 //     transform, by morphological reconstruction with cv::dilate). A neck
 //     between two stones is a saddle of the distance; a stone's own bumps
-//     are shallower than that depth.
+//     are shallower than that depth. Where a small stone presses on a large
+//     one along a wide contact the saddle lies inside the small one, so each
+//     touching pair is split again along the line between the concave
+//     corners of its outline (cv::convexityDefects). Before that, threads of
+//     stone-grey pixels on the rims of voids (the mean of void and mastic)
+//     are taken off by an opening.
 //  3. Stones smaller than the 2.36 mm class (equivalent diameter) are mastic,
 //     by the method's rule (docs/method.md section 3).
 //  4. The disks of the hexagonal packing take the phase under their centres:
@@ -29,6 +34,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -149,6 +155,131 @@ inline void flood_by_levels(const cv::Mat& distance, const cv::Mat& stones, cv::
   labels.convertTo(markers, CV_32S);
 }
 
+// Where a small stone presses on a large one along a wide contact, the
+// distance's saddle lies inside the small stone, not at the contact, and the
+// flood gives the large stone a cap of the small one. The contact itself
+// shows in the outline of the two stones together: it runs between two
+// concave corners (convexity defects of the pair's outline). So each pair of
+// touching regions is split again along the straight line between the
+// defects nearest the two ends of their flooded boundary, where both exist,
+// are at least `least_depth` pixels deep, and the line lies inside the pair.
+// Only the pair's own pixels near that line (over its length, and as far to
+// either side as it is long) change hands.
+inline void split_at_concavities(cv::Mat& markers, double least_depth) {
+  struct Pair {
+    std::vector<cv::Point2f> boundary;  // midpoints between the two regions' 4-adjacent pixels
+  };
+  std::map<std::pair<int, int>, Pair> pairs;
+  int most = 0;
+  for (int r = 0; r < markers.rows; ++r)
+    for (int c = 0; c < markers.cols; ++c) {
+      const int a = markers.at<int>(r, c);
+      most = std::max(most, a);
+      if (a <= 0) continue;
+      if (c + 1 < markers.cols) {
+        const int b = markers.at<int>(r, c + 1);
+        if (b > 0 && b != a) pairs[{std::min(a, b), std::max(a, b)}].boundary.emplace_back(c + 0.5f, static_cast<float>(r));
+      }
+      if (r + 1 < markers.rows) {
+        const int b = markers.at<int>(r + 1, c);
+        if (b > 0 && b != a) pairs[{std::min(a, b), std::max(a, b)}].boundary.emplace_back(static_cast<float>(c), r + 0.5f);
+      }
+    }
+  // Each region's bounding box, kept a superset as pixels change hands.
+  std::vector<cv::Rect> box(static_cast<std::size_t>(most) + 1);
+  for (int r = 0; r < markers.rows; ++r)
+    for (int c = 0; c < markers.cols; ++c) {
+      const int a = markers.at<int>(r, c);
+      if (a > 0) box[a] = box[a].area() ? box[a] | cv::Rect(c, r, 1, 1) : cv::Rect(c, r, 1, 1);
+    }
+  for (const auto& [ab, pair] : pairs) {
+    const int a = ab.first, b = ab.second;
+    // The two ends of the flooded boundary: its extremes along its own axis.
+    cv::PCA axis(cv::Mat(pair.boundary).reshape(1), cv::Mat(), cv::PCA::DATA_AS_ROW);
+    const cv::Point2f mean(axis.mean.at<float>(0), axis.mean.at<float>(1));
+    const cv::Point2f dir(axis.eigenvectors.at<float>(0, 0), axis.eigenvectors.at<float>(0, 1));
+    cv::Point2f ends[2] = {mean, mean};
+    float lo = 0.0f, hi = 0.0f;
+    for (const auto& p : pair.boundary) {
+      const float t = (p - mean).dot(dir);
+      if (t < lo) lo = t, ends[0] = p;
+      if (t > hi) hi = t, ends[1] = p;
+    }
+    const float length = hi - lo;
+    // The pair's outline and its concave corners.
+    const cv::Rect roi = box[a] | box[b];
+    cv::Mat both = (markers(roi) == a) | (markers(roi) == b), padded;
+    cv::copyMakeBorder(both, padded, 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);
+    std::vector<std::vector<cv::Point>> contours;
+    cv::findContours(padded, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+    if (contours.empty()) continue;
+    std::size_t largest = 0;
+    for (std::size_t i = 1; i < contours.size(); ++i)
+      if (contours[i].size() > contours[largest].size()) largest = i;
+    const auto& outline = contours[largest];
+    if (outline.size() < 4) continue;
+    std::vector<int> hull;
+    cv::convexHull(outline, hull, true, false);
+    if (hull.size() < 3) continue;
+    std::vector<cv::Vec4i> defects;
+    try {
+      cv::convexityDefects(outline, hull, defects);
+    } catch (const cv::Exception&) {
+      continue;  // a self-touching outline: leave the flood's split
+    }
+    // The deepest defect near each end (within half the boundary's length
+    // and three pixels).
+    const cv::Point2f offset(roi.x - 1.0f, roi.y - 1.0f);
+    const float reach = 0.5f * length + 3.0f;
+    cv::Point2f corner[2];
+    bool found[2] = {false, false};
+    float depth[2] = {0.0f, 0.0f};
+    for (const auto& d : defects) {
+      const float deep = d[3] / 256.0f;
+      if (deep < least_depth) continue;
+      const cv::Point2f p = cv::Point2f(outline[d[2]]) + offset;
+      for (int e = 0; e < 2; ++e)
+        if (cv::norm(p - ends[e]) <= reach && deep > depth[e]) corner[e] = p, depth[e] = deep, found[e] = true;
+    }
+    if (!found[0] || !found[1]) continue;
+    const cv::Point2f line = corner[1] - corner[0];
+    const float span = static_cast<float>(cv::norm(line));
+    if (span < 1.0f) continue;
+    // The line must run inside the pair: its points a or b.
+    bool inside = true;
+    for (int k = 1; k < static_cast<int>(span) && inside; ++k) {
+      const cv::Point2f p = corner[0] + line * (k / span);
+      const int v = markers.at<int>(cvRound(p.y), cvRound(p.x));
+      inside = v == a || v == b;
+    }
+    if (!inside) continue;
+    // Which side is whose: the side where most of each region's pixels near the line lie.
+    const cv::Point2f unit = line / span, normal(-unit.y, unit.x);
+    auto near_line = [&](int r, int c, float& side) {
+      const cv::Point2f q = cv::Point2f(static_cast<float>(c), static_cast<float>(r)) - corner[0];
+      const float along = q.dot(unit);
+      side = q.dot(normal);
+      return along >= 0.0f && along <= span && std::abs(side) <= span;
+    };
+    long votes[2] = {0, 0};  // a's pixels on the positive side minus the negative, b's likewise
+    for (int r = roi.y; r < roi.y + roi.height; ++r)
+      for (int c = roi.x; c < roi.x + roi.width; ++c) {
+        const int v = markers.at<int>(r, c);
+        float side = 0.0f;
+        if ((v == a || v == b) && near_line(r, c, side) && side != 0.0f) votes[v == b] += side > 0.0f ? 1 : -1;
+      }
+    if ((votes[0] > 0) == (votes[1] > 0) || votes[0] == 0 || votes[1] == 0) continue;
+    const int positive = votes[0] > 0 ? a : b, negative = positive == a ? b : a;
+    for (int r = roi.y; r < roi.y + roi.height; ++r)
+      for (int c = roi.x; c < roi.x + roi.width; ++c) {
+        int& v = markers.at<int>(r, c);
+        float side = 0.0f;
+        if ((v == a || v == b) && near_line(r, c, side) && side != 0.0f) v = side > 0.0f ? positive : negative;
+      }
+    box[a] = box[b] = box[a] | box[b];
+  }
+}
+
 }  // namespace detail
 
 // Reads an image file, in grey (colour is turned grey), or as it is for a
@@ -239,6 +370,16 @@ inline SegmentedImage segment_image(const cv::Mat& image, const ImageSettings& s
     };
     stones = in_class(stone_at);
     if (void_at >= 0) voids = in_class(void_at);
+    // A pixel on the edge between void (bright) and mastic (dark) is the mean
+    // of the two, which is the grey of stone: a thread of such pixels along a
+    // void's rim is no stone. A stone is thicker than 3 pixels everywhere but
+    // at its sharpest corners, so an opening by a 3 x 3 square takes the
+    // threads and leaves the stones.
+    if (void_at >= 0) {
+      cv::Mat opened;
+      cv::morphologyEx(stones, opened, cv::MORPH_OPEN, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));
+      stones = opened;
+    }
   }
   if (cv::countNonZero(stones) == 0)
     throw std::invalid_argument("no stone in the image: all " + std::to_string(image.total()) +
@@ -263,6 +404,7 @@ inline SegmentedImage segment_image(const cv::Mat& image, const ImageSettings& s
     const int found = cv::connectedComponents(seeds, markers, 8, CV_32S) - 1;
     if (s.separate_stones && found > 1) {
       detail::flood_by_levels(distance, stones, markers);
+      detail::split_at_concavities(markers, s.separation_depth_mm / px);
     } else if (s.separate_stones) {
       markers = cv::Mat();
       cv::connectedComponents(stones, markers, 8, CV_32S);
