@@ -8,6 +8,7 @@
 #include "common/specimen_cli.hpp"
 
 #include <vrut/analysis/rutting_ensemble.hpp>
+#include <vrut/analysis/standard_ds.hpp>
 #include <vrut/backend.hpp>
 #include <vrut/io/checkpoint.hpp>
 #include <vrut/io/memory_check.hpp>
@@ -106,6 +107,12 @@ void final_vtk(const vrut::Specimen& sp, const vrut::RuttingResult& res, const s
   data.scalars = {{"radius", radius}, {"group", group}};
   data.vectors = {{"displacement", disp}, {"velocity", vel}};
   vrut::write_vtk_disks(path, "vrut rutting final state (m); group 0 mastic, 1 aggregate", end.x, end.y, data);
+}
+
+// A DS as the standard reports it (analysis/standard_ds.hpp): the value, and
+// whether it is only a lower bound ("> 6000", or our "above N").
+nlohmann::json standard_ds_json(const vrut::ReportedDS& d) {
+  return {{"passes_per_mm", d.value}, {"censored", d.censored}};
 }
 
 nlohmann::json statistics_json(const vrut::SampleStatistics& s) {
@@ -531,12 +538,23 @@ int main(int argc, char** argv) {
     displacement_png(sp, res, output->file("displacement.png").string());
     final_vtk(sp, res, output->file("final.vtk").string());
 
+    // Each specimen's DS as the standard reports it, and their median with
+    // the censored ones counted as censored (Kaplan-Meier).
+    std::vector<vrut::ReportedDS> reported;
+    for (const auto& r : runs)
+      reported.push_back(interrupted ? vrut::ReportedDS{0.0, true}
+                                     : vrut::report_ds(r.dynamic_stability, r.dynamic_stability_is_lower_bound));
+    const vrut::ReportedDS reported_mean_curve =
+        interrupted ? vrut::ReportedDS{0.0, true}
+                    : vrut::report_ds(summary.mean_curve.dynamic_stability, summary.mean_curve.dynamic_stability_is_lower_bound);
+    const vrut::ReportedDS reported_median = vrut::censored_median(reported);
     if (ensemble) {
       std::ostringstream per_seed;
       per_seed.precision(17);
       per_seed << "seed,disks,aggregates,aggregate_area_fraction,rut_depth_mm,deformation_45min_mm,"
                   "deformation_60min_mm,dynamic_stability_passes_per_mm,dynamic_stability_is_lower_bound,"
-                  "deformation_resolution_mm,stones,stone_pairs_touching,steps"
+                  "deformation_resolution_mm,stones,stone_pairs_touching,steps,ds_standard_passes_per_mm,"
+                  "ds_standard_censored"
                << (from_images ? ",image\n" : "\n");
       for (std::size_t e = 0; e < runs.size(); ++e) {
         per_seed << seeds[e] << ',' << runs[e].particles << ',' << facts[e].aggregates << ','
@@ -544,7 +562,8 @@ int main(int argc, char** argv) {
                  << runs[e].deformation_at_ds_start * 1e3 << ',' << runs[e].deformation_final * 1e3 << ','
                  << runs[e].dynamic_stability << ',' << (runs[e].dynamic_stability_is_lower_bound ? 1 : 0) << ','
                  << runs[e].deformation_resolution * 1e3 << ',' << runs[e].stones << ','
-                 << runs[e].stone_pairs_touching << ',' << runs[e].steps;
+                 << runs[e].stone_pairs_touching << ',' << runs[e].steps << ',' << reported[e].value << ','
+                 << (reported[e].censored ? 1 : 0);
         if (from_images) per_seed << ',' << images[seeds[e] - 1];
         per_seed << '\n';
       }
@@ -586,6 +605,8 @@ int main(int argc, char** argv) {
     // is a lower bound: "above" the value given.
     j["dynamic_stability_is_lower_bound"] = summary.mean_curve.dynamic_stability_is_lower_bound;
     j["deformation_resolution_mm"] = summary.mean_curve.deformation_resolution * 1e3;
+    // As JTG E20 T0719 writes it: capped at 6000 ("> 6000").
+    if (!interrupted) j["dynamic_stability_standard"] = standard_ds_json(reported_mean_curve);
     j["specimen"] = specimen_cli::specimen_summary(sp);
     j["interrupted"] = interrupted;
     j["minutes_done"] = minutes_done;
@@ -600,6 +621,12 @@ int main(int argc, char** argv) {
       e["dynamic_stability_of_mean_curve"] = summary.mean_curve.dynamic_stability;
       e["dynamic_stability_lower_bounds"] = summary.dynamic_stability_lower_bounds;
       e["dynamic_stability_median_is_lower_bound"] = summary.dynamic_stability_median_is_lower_bound;
+      // The standard's values: the median with capped and unresolved DS
+      // as censored (Kaplan-Meier), and the mean curve's DS.
+      if (!interrupted) {
+        e["dynamic_stability_standard_median"] = standard_ds_json(reported_median);
+        e["dynamic_stability_standard_of_mean_curve"] = standard_ds_json(reported_mean_curve);
+      }
       nlohmann::json per = nlohmann::json::array();
       for (std::size_t k = 0; k < runs.size(); ++k)
         per.push_back({{"seed", seeds[k]},
@@ -608,6 +635,7 @@ int main(int argc, char** argv) {
                        {"deformation_45min_mm", runs[k].deformation_at_ds_start * 1e3},
                        {"dynamic_stability_passes_per_mm", runs[k].dynamic_stability},
                        {"dynamic_stability_is_lower_bound", runs[k].dynamic_stability_is_lower_bound},
+                       {"dynamic_stability_standard", standard_ds_json(reported[k])},
                        {"rank", facts[k].rank}});  // the MPI rank that ran it
       e["per_seed"] = per;
       j["ensemble"] = e;
@@ -634,6 +662,13 @@ int main(int argc, char** argv) {
       std::snprintf(text, sizeof text, "%s%.0f", lower_bound ? "above " : "", ds);
       return std::string(text);
     };
+    // As the standard writes a DS: "> 6000" past its cap, ours "above N".
+    auto standard_text = [](const vrut::ReportedDS& d) {
+      char text[64];
+      std::snprintf(text, sizeof text, "%s%.0f", d.censored ? (d.value >= vrut::standard_ds_cap ? "> " : "above ") : "",
+                    d.value);
+      return std::string(text);
+    };
     const std::string speed = [&] {
       char text[128];
       std::snprintf(text, sizeof text, "%zu disks, %ld steps, %.0f s, %.3g particle-steps/s", disks, res.steps,
@@ -655,6 +690,9 @@ int main(int argc, char** argv) {
         std::printf("; %d of %d specimens deform less from minute %.0f to %.0f than their curves resolve, so their DS "
                     "are lower bounds (seeds.csv)",
                     summary.dynamic_stability_lower_bounds, r.n, wt.ds_from_minute, wt.minutes);
+      std::printf("; as the standard reports it (capped at %.0f): median %s (censored values counted as such), of the "
+                  "mean curve %s passes/mm",
+                  vrut::standard_ds_cap, standard_text(reported_median).c_str(), standard_text(reported_mean_curve).c_str());
       std::printf(" (%s)\nresults in %s\n", speed.c_str(), out.c_str());
     } else {
       std::printf("%s: rut depth %.2f mm at %.0f min, dynamic stability %s passes/mm",
@@ -664,6 +702,7 @@ int main(int argc, char** argv) {
         std::printf(" (from minute %.0f to %.0f the plate sank %.4f mm, less than the %.4f mm its curve resolves)",
                     wt.ds_from_minute, wt.minutes, (res.deformation_final - res.deformation_at_ds_start) * 1e3,
                     res.deformation_resolution * 1e3);
+      std::printf(", as the standard reports it %s", standard_text(reported_mean_curve).c_str());
       std::printf(" (%s)\nresults in %s\n", speed.c_str(), out.c_str());
     }
     return 0;

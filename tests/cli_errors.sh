@@ -227,6 +227,14 @@ rutting)
   else echo "FAIL: seeds.csv: $(cat "$work/bounds/seeds.csv")"; failures=$((failures + 1)); fi
   [[ $(grep -c '"dynamic_stability_is_lower_bound": true' "$work/bounds/summary.json") -ge 2 ]] ||
     { echo "FAIL: summary.json's per-seed entries do not flag the lower bounds"; failures=$((failures + 1)); }
+  # As the standard reports them: each DS capped at 6000 and censored
+  # (columns 14-15), and the median of two censored values censored too.
+  if awk -F, 'NR > 1 { n++; cap = $8 < 6000 ? $8 : 6000; if ($15 != 1 || ($14 - cap) ^ 2 > 1e-12) bad++ }
+              END { exit !(n == 2 && bad == 0) }' "$work/bounds/seeds.csv"; then
+    echo "ok:   seeds.csv gives each DS as the standard does: min(DS, 6000), censored"
+  else echo "FAIL: seeds.csv's standard DS: $(cat "$work/bounds/seeds.csv")"; failures=$((failures + 1)); fi
+  grep -A 2 '"dynamic_stability_standard_median"' "$work/bounds/summary.json" | grep -q '"censored": true' ||
+    { echo "FAIL: summary.json's standard median of two censored DS is not censored"; failures=$((failures + 1)); }
   # Ctrl-C: the run stops at its next sample, writes the results so far, says
   # so and exits 130 (128 + SIGINT). A test of 100 times the usual length
   # (alpha_T 1e3), so that the signal comes while it loads.

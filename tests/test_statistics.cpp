@@ -1,10 +1,13 @@
 // Ensemble statistics against values worked by hand and against the
 // textbook Student-t quantiles.
 #include <vrut/analysis/rutting_ensemble.hpp>
+#include <vrut/analysis/standard_ds.hpp>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 TEST_CASE("ensemble statistics match hand-worked values", "[analysis][unit]") {
   // 1..5: mean 3, sd sqrt(2.5); t(0.975, 4 dof) = 2.7764 (printed tables).
@@ -94,4 +97,65 @@ TEST_CASE("a DS whose deformation the curve cannot resolve is a lower bound", "[
   const auto two_flat = vrut::summarize_rutting({steep, flat, curve(0.0005)}, vrut::WheelTracking{});
   CHECK(two_flat.dynamic_stability_lower_bounds == 2);
   CHECK(two_flat.dynamic_stability_median_is_lower_bound);
+}
+
+// The DS as the standard writes it (analysis/standard_ds.hpp): capped at
+// 6000 passes/mm, "> 6000"; and the median of censored values, worked by hand.
+TEST_CASE("the standard caps a DS at 6000 and keeps a lower bound a lower bound", "[analysis][unit]") {
+  const auto plain = vrut::report_ds(970.0, false);
+  CHECK((plain.value == 970.0 && !plain.censored));
+  const auto capped = vrut::report_ds(7200.0, false);
+  CHECK((capped.value == 6000.0 && capped.censored));
+  const auto bound = vrut::report_ds(2100.0, true);  // "above 2100" stays that
+  CHECK((bound.value == 2100.0 && bound.censored));
+  const auto bound_over = vrut::report_ds(9000.0, true);  // "above 9000" is "> 6000"
+  CHECK((bound_over.value == 6000.0 && bound_over.censored));
+  const auto flat = vrut::report_ds(std::numeric_limits<double>::infinity(), false);
+  CHECK((flat.value == 6000.0 && flat.censored));
+  CHECK_THROWS(vrut::report_ds(std::nan(""), false));
+}
+
+TEST_CASE("the median of censored DS values is the Kaplan-Meier median", "[analysis][unit]") {
+  using R = vrut::ReportedDS;
+  auto median = [](std::vector<R> v) { return vrut::censored_median(std::move(v)); };
+  // Nothing censored: the ordinary median, odd and even.
+  CHECK(median({{900, false}, {500, false}, {700, false}}).value == 700.0);
+  const auto even = median({{4, false}, {1, false}, {3, false}, {2, false}});
+  CHECK((even.value == 2.5 && !even.censored));
+  // Censored above every known value: S falls 0.8, 0.6, 0.4 at 500, 700, 900.
+  const auto capped = median({{500, false}, {6000, true}, {700, false}, {6000, true}, {900, false}});
+  CHECK((capped.value == 900.0 && !capped.censored));
+  // A bound inside: {500, >800, 1000, 1200}. S = 3/4 after 500; >800 leaves
+  // two at risk; at 1000 S = 3/4 * 1/2 = 3/8 < 1/2: the median is 1000 (the
+  // plain median, taking the bound as a value, would say 900).
+  const auto inside = median({{1000, false}, {800, true}, {500, false}, {1200, false}});
+  CHECK((inside.value == 1000.0 && !inside.censored));
+  // S at exactly 1/2 with only censored values after: {500, 700, >6000, >6000}
+  // has its median between 700 and a value of 6000 or more: above 3350.
+  const auto half = median({{500, false}, {700, false}, {6000, true}, {6000, true}});
+  CHECK((half.value == 3350.0 && half.censored));
+  // Most censored: S = 2/3 after 500 and never falls further: above 6000.
+  const auto most = median({{500, false}, {6000, true}, {6000, true}});
+  CHECK((most.value == 6000.0 && most.censored));
+  // A tie of a known and a censored value: the censored one is still at
+  // risk at the tie: {600, >600, 700}: S = 2/3 at 600, then 0 at 700.
+  const auto tie = median({{600, true}, {600, false}, {700, false}});
+  CHECK((tie.value == 700.0 && !tie.censored));
+  CHECK_THROWS(median({}));
+}
+
+TEST_CASE("resampling says how well a median of n specimens is known", "[analysis][unit]") {
+  // Every specimen alike: any resampled median is that value.
+  const std::vector<vrut::ReportedDS> same(10, {800.0, false});
+  CHECK(vrut::median_relative_halfwidth(same, 3) == 0.0);
+  // Two values, 500 and 1500, half each: a sample of one gives either, so
+  // the central 95 % spans both: half-width 500 over the median 1000.
+  std::vector<vrut::ReportedDS> two;
+  for (int k = 0; k < 5; ++k) two.push_back({500.0, false}), two.push_back({1500.0, false});
+  CHECK(vrut::median_relative_halfwidth(two, 1) == Approx(0.5));
+  // A spread ensemble (100 to 2000 in steps of 100): a median of 16
+  // specimens is known better than a median of 4.
+  std::vector<vrut::ReportedDS> spread;
+  for (int k = 1; k <= 20; ++k) spread.push_back({100.0 * k, false});
+  CHECK(vrut::median_relative_halfwidth(spread, 16) < vrut::median_relative_halfwidth(spread, 4));
 }

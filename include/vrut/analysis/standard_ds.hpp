@@ -1,0 +1,107 @@
+#pragma once
+// The dynamic stability as the wheel-tracking standard reports it, and the
+// statistics of an ensemble whose DS values are partly censored. Host-only.
+//
+// JTG E20 T0719 computes DS = (t2 - t1) N C1 C2 / (d2 - d1) with t1 = 45 and
+// t2 = 60 min, N = 42 passes a minute, C1 = 1.0 for a crank-driven wheel and
+// C2 = 1.0 for a 300 mm laboratory slab (the values the rutting protocol
+// uses), and writes a DS above 6000 passes/mm as "> 6000". So a reported DS
+// is either a value or a lower bound: the cap, or (ours) the DS of the
+// smallest deformation change the curve resolves (RuttingResult). A lower
+// bound is a right-censored value: the true DS lies at or above it.
+//
+// The median of censored values is the Kaplan-Meier median: the survival
+// curve S(t) (the share of DS values above t) falls at each known value by
+// its share of the values still at risk, and a censored value leaves the risk
+// set without a fall. The median is where S first falls to 0.5 or below;
+// where S sits at exactly 0.5, the midpoint to the next known value, so that
+// with nothing censored it is the ordinary median. Where S never falls to 0.5
+// the median is itself censored: above the largest value at risk.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace vrut {
+
+// One DS as reported: `value`, and whether the DS is only known to lie at or above it.
+struct ReportedDS {
+  double value = 0.0;
+  bool censored = false;
+};
+
+// The standard's cap (passes/mm).
+inline constexpr double standard_ds_cap = 6000.0;
+
+// A computed DS (passes/mm; `lower_bound`: only a lower bound already) as
+// the standard reports it: capped at `cap`. A DS that did not grow at all is
+// infinite and reports as the cap.
+inline ReportedDS report_ds(double ds, bool lower_bound, double cap = standard_ds_cap) {
+  if (std::isnan(ds)) throw std::invalid_argument("a DS that was not computed cannot be reported");
+  if (ds > cap) return {cap, true};
+  return {ds, lower_bound};
+}
+
+// The Kaplan-Meier median of right-censored values (see above).
+inline ReportedDS censored_median(std::vector<ReportedDS> values) {
+  if (values.empty()) throw std::invalid_argument("the median of no values");
+  // Known values before censored ones at a tie: a censored value equal to a
+  // known one is still at risk when the known one falls (the usual rule).
+  std::sort(values.begin(), values.end(), [](const ReportedDS& a, const ReportedDS& b) {
+    return a.value < b.value || (a.value == b.value && !a.censored && b.censored);
+  });
+  const std::size_t n = values.size();
+  double survival = 1.0;
+  for (std::size_t i = 0; i < n;) {
+    // The known values tied at this one fall together.
+    std::size_t j = i, known = 0;
+    while (j < n && values[j].value == values[i].value && !values[j].censored) ++j, ++known;
+    if (known > 0) {
+      const double at_risk = static_cast<double>(n - i);
+      survival *= 1.0 - known / at_risk;
+      constexpr double tie = 1e-12;  // S is a product of ratios: exactly 0.5 up to rounding
+      if (survival < 0.5 - tie) return {values[i].value, false};
+      if (survival <= 0.5 + tie) {
+        // On the plateau at 0.5: the midpoint to the next known value.
+        // (Where the next value is censored, every value after lies at or
+        // above it, so the midpoint to it is a lower bound.)
+        if (j < n) return {0.5 * (values[i].value + values[j].value), values[j].censored};
+        return {values[i].value, false};  // unreachable: S is 0 after the last known value
+      }
+      i = j;
+    } else {
+      ++i;  // a censored value leaves the risk set
+    }
+  }
+  // S never reached 0.5: the median lies above the largest value at risk.
+  double largest = 0.0;
+  for (const auto& v : values) largest = std::max(largest, v.value);
+  return {largest, true};
+}
+
+// How well a median of n specimens is known, by resampling an ensemble: the
+// half-width of the central 95 % of the medians of `draws` samples of n
+// specimens drawn with replacement, over the whole ensemble's median. A
+// resampled median that is itself censored counts at its bound.
+inline double median_relative_halfwidth(const std::vector<ReportedDS>& ensemble, int n, int draws = 2000,
+                                        std::uint64_t seed = 1) {
+  if (ensemble.empty() || n < 1 || draws < 40) throw std::invalid_argument("resampling needs values, n >= 1, draws >= 40");
+  const double centre = censored_median(ensemble).value;
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, ensemble.size() - 1);
+  std::vector<double> medians;
+  std::vector<ReportedDS> sample(static_cast<std::size_t>(n));
+  for (int d = 0; d < draws; ++d) {
+    for (auto& s : sample) s = ensemble[pick(rng)];
+    medians.push_back(censored_median(sample).value);
+  }
+  std::sort(medians.begin(), medians.end());
+  const double low = medians[static_cast<std::size_t>(0.025 * (draws - 1))];
+  const double high = medians[static_cast<std::size_t>(std::ceil(0.975 * (draws - 1)))];
+  return 0.5 * (high - low) / centre;
+}
+
+}  // namespace vrut
