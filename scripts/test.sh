@@ -14,5 +14,7 @@ cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DKokkos_ROOT="
 cmake --build "$build" --parallel "$jobs"
 cd "$build"
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2} OMP_PROC_BIND=${OMP_PROC_BIND:-false}
+# Side by side as each test's PROCESSORS allow (tests/CMakeLists.txt): on 2
+# cores, the single-threaded tests two at a time, the others alone.
 # shellcheck disable=SC2086
-ctest --output-on-failure --timeout 600 ${CTEST_ARGS:-}
+ctest --output-on-failure --timeout 600 --parallel "$jobs" ${CTEST_ARGS:-}
