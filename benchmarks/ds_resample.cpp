@@ -3,8 +3,9 @@
 // the standard reports them (capped at 6000, lower bounds censored), the
 // Kaplan-Meier median, and for n specimens the half-width of the central 95 %
 // of the medians of n specimens drawn with replacement from the ensemble,
-// over its median (analysis/standard_ds.hpp). Beyond the ensemble's own size
-// the draws take its specimens as the whole population: a projection.
+// over its median (analysis/standard_ds.hpp; smoothed draws). Beyond the
+// ensemble's own size the draws take its specimens, smoothed, as the whole
+// population: a projection.
 //
 //   vrut-ds-resample [--within 0.15] out/mix1/seeds.csv out/mix2/seeds.csv ...
 #include <vrut/analysis/standard_ds.hpp>
@@ -63,7 +64,7 @@ int main(int argc, char** argv) {
   app.add_option("--draws", draws, "resampled medians per specimen count")->check(CLI::Range(100, 1000000));
   CLI11_PARSE(app, argc, argv);
   try {
-    const std::vector<int> counts = {3, 5, 8, 10, 16, 20, 30, 40, 60, 80};
+    const std::vector<int> counts = {3, 5, 8, 10, 16, 20, 30, 40, 60, 80, 120, 160, 240, 320};
     for (const auto& f : files) {
       const auto ds = read_seeds_csv(f);
       const auto median = vrut::censored_median(ds);
