@@ -663,11 +663,8 @@ int main(int argc, char** argv) {
       return std::string(text);
     };
     // As the standard writes a DS: "> 6000" past its cap, ours "above N".
-    auto standard_text = [](const vrut::ReportedDS& d) {
-      char text[64];
-      std::snprintf(text, sizeof text, "%s%.0f", d.censored ? (d.value >= vrut::standard_ds_cap ? "> " : "above ") : "",
-                    d.value);
-      return std::string(text);
+    auto standard_text = [&](const vrut::ReportedDS& d) {
+      return d.censored && d.value >= vrut::standard_ds_cap ? "> " + ds_text(d.value, false) : ds_text(d.value, d.censored);
     };
     const std::string speed = [&] {
       char text[128];
