@@ -4,7 +4,7 @@
 # options; prints a markdown row: per mix the rut depth's mean and 95 %
 # interval (Student t) and the DS median, then 1# over 3# (the spread).
 #   benchmarks/gradation_study.sh OUTDIR SEEDS LABEL [vrut-rutting options...]
-#   e.g. benchmarks/gradation_study.sh out/film 1-10 "film between stones" --width-mm 100 --film-between-stones
+#   e.g. benchmarks/gradation_study.sh out/film 1-10 "mean film between stones" --width-mm 100 --stone-film mean
 # A mix whose OUTDIR/mixM/seeds.csv exists is not run again.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

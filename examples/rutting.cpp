@@ -137,7 +137,7 @@ struct RunOptions {
   vrut::WheelTracking wt;
   vrut::RuttingMaterials mat;
   vrut::RuttingNumerics num;
-  std::string backend = "openmp", out = "out/rutting", conversion = "seed", seeds_text;
+  std::string backend = "openmp", out = "out/rutting", conversion = "seed", stone_film = "per-contact", seeds_text;
   int threads = 0;
   bool force = false, exact_stones = false;
   double checkpoint_every = 0.0;
@@ -153,6 +153,9 @@ struct RunOptions {
   void convert() {
     mat.mastic = {e1 * 1e6, eta1 * 1e6, e2 * 1e6, eta2 * 1e6};
     mat.calibrated_conversion = conversion == "calibrated";
+    mat.stone_film = stone_film == "none" ? vrut::StoneFilm::none
+                     : stone_film == "mean" ? vrut::StoneFilm::mean
+                                            : vrut::StoneFilm::per_contact;
     mat.aggregate_modulus = aggregate_gpa * 1e9;
     mat.rigid_stones = !exact_stones;
     wt.pressure = pressure_mpa * 1e6;
@@ -199,19 +202,17 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--stone-friction", mat.stone_friction,
                  "aggregate-aggregate friction where no bond holds (-1: the same as --friction)")
       ->check(cli::finite_range(-1.0, 10.0))->capture_default_str()->group("Materials");
-  app.add_flag("--film-between-stones", mat.film_between_stones,
-               "two stones meet through a mastic film (Burger's, stone friction) that squeezes out to the "
-               "stone law, not the rigid stone law alone")
-      ->group("Materials");
+  app.add_option("--stone-film", o.stone_film,
+                 "how two stones meet: per-contact (each pair through its own mastic film, sized from where its disks "
+                 "lie inside the stones' outlines, then the stone law once it squeezes out), mean (one film of "
+                 "--film-gap for every pair), none (method.md's stone law alone, the model before 2026-12-02)")
+      ->check(CLI::IsMember({"per-contact", "mean", "none"}))->capture_default_str()->group("Materials");
   app.add_option("--film-gap", mat.film_gap,
-                 "the film's thickness, in disk diameters (0.40: the mean gap between two stones' outlines in 2# "
-                 "where their disks are neighbours)")
+                 "--stone-film mean: the film's thickness, in disk diameters (0.40: the mean gap between two stones' "
+                 "outlines in 2# where their disks are neighbours)")
       ->check(cli::finite_range(0.01, 0.99))->capture_default_str()->group("Materials");
-  app.add_flag("--film-endless", mat.film_endless, "the film never squeezes out: the stones never bear")
-      ->group("Materials");
-  app.add_flag("--film-per-contact", mat.film_per_contact,
-               "each pair of stones meets through its own film, sized from where its disks lie inside the stones' "
-               "outlines (implies --film-between-stones; --film-gap is then unused, --film-endless refused)")
+  app.add_flag("--film-endless", mat.film_endless,
+               "--stone-film mean: the film never squeezes out, the stones never bear (refused with the others)")
       ->group("Materials");  // no CLI excludes: config.ini holds every option, and reads back
   app.add_flag("--exact-stones", o.exact_stones,
                "the method's stones: bonded disks on the stone's 2 t E springs, walls as stiff, and the time step "
@@ -340,7 +341,8 @@ int main(int argc, char** argv) {
     const auto& wt = o.wt;
     const auto& mat = o.mat;
     const auto& num = o.num;
-    const std::string &backend = o.backend, &out = o.out, &conversion = o.conversion, &seeds_text = o.seeds_text;
+    const std::string &backend = o.backend, &out = o.out, &conversion = o.conversion, &stone_film = o.stone_film,
+                      &seeds_text = o.seeds_text;
     const std::vector<std::string>& images = o.io.images;
     const bool from_images = !images.empty();
     if (from_images && (!seeds_text.empty() || o.seed_given))
@@ -548,6 +550,15 @@ int main(int argc, char** argv) {
         interrupted ? vrut::ReportedDS{0.0, true}
                     : vrut::report_ds(summary.mean_curve.dynamic_stability, summary.mean_curve.dynamic_stability_is_lower_bound);
     const vrut::ReportedDS reported_median = vrut::censored_median(reported);
+    // Their 95 % intervals (analysis/standard_ds.hpp): the median's from the
+    // order statistics, the mean curve's from the mean window deformation.
+    const vrut::MedianInterval median_ci = vrut::median_interval(reported);
+    std::vector<double> window_mm;
+    for (const auto& r : runs) window_mm.push_back((r.deformation_final - r.deformation_at_ds_start) * 1e3);
+    const bool intervals = ensemble && !interrupted && runs.size() >= 2;
+    const vrut::DSInterval mean_curve_ci =
+        intervals ? vrut::mean_curve_ds_interval(window_mm, (wt.minutes - wt.ds_from_minute) * wt.passes_per_minute)
+                  : vrut::DSInterval{};
     if (ensemble) {
       std::ostringstream per_seed;
       per_seed.precision(17);
@@ -562,8 +573,11 @@ int main(int argc, char** argv) {
                  << runs[e].deformation_at_ds_start * 1e3 << ',' << runs[e].deformation_final * 1e3 << ','
                  << runs[e].dynamic_stability << ',' << (runs[e].dynamic_stability_is_lower_bound ? 1 : 0) << ','
                  << runs[e].deformation_resolution * 1e3 << ',' << runs[e].stones << ','
-                 << runs[e].stone_pairs_touching << ',' << runs[e].steps << ',' << reported[e].value << ','
-                 << (reported[e].censored ? 1 : 0);
+                 << runs[e].stone_pairs_touching << ',' << runs[e].steps << ',';
+        if (interrupted)
+          per_seed << "nan,nan";  // a run stopped before its end has no DS
+        else
+          per_seed << reported[e].value << ',' << (reported[e].censored ? 1 : 0);
         if (from_images) per_seed << ',' << images[seeds[e] - 1];
         per_seed << '\n';
       }
@@ -586,6 +600,8 @@ int main(int argc, char** argv) {
     j["stone_pairs_touching"] = res.stone_pairs_touching;
     j["stone_neighbours_per_stone"] = res.stones > 0 ? 2.0 * res.stone_pairs_touching / res.stones : 0.0;
     j["rigid_stones"] = mat.rigid_stones;
+    j["stone_film"] = stone_film;
+    j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
     j["steps"] = res.steps;
     j["reduced_dt_s"] = res.dt;
     j["wall_seconds"] = wall_seconds;
@@ -626,6 +642,12 @@ int main(int argc, char** argv) {
       if (!interrupted) {
         e["dynamic_stability_standard_median"] = standard_ds_json(reported_median);
         e["dynamic_stability_standard_of_mean_curve"] = standard_ds_json(reported_mean_curve);
+        if (median_ci.defined)
+          e["dynamic_stability_standard_median_ci95"] = {{"low", standard_ds_json(median_ci.low)},
+                                                         {"high", standard_ds_json(median_ci.high)},
+                                                         {"coverage", median_ci.coverage}};
+        e["dynamic_stability_standard_of_mean_curve_ci95"] = {{"low", standard_ds_json(mean_curve_ci.low)},
+                                                              {"high", standard_ds_json(mean_curve_ci.high)}};
       }
       nlohmann::json per = nlohmann::json::array();
       for (std::size_t k = 0; k < runs.size(); ++k)
@@ -687,9 +709,15 @@ int main(int argc, char** argv) {
         std::printf("; %d of %d specimens deform less from minute %.0f to %.0f than their curves resolve, so their DS "
                     "are lower bounds (seeds.csv)",
                     summary.dynamic_stability_lower_bounds, r.n, wt.ds_from_minute, wt.minutes);
-      std::printf("; as the standard reports it (capped at %.0f): median %s (censored values counted as such), of the "
-                  "mean curve %s passes/mm",
-                  vrut::standard_ds_cap, standard_text(reported_median).c_str(), standard_text(reported_mean_curve).c_str());
+      auto interval_text = [&](const vrut::ReportedDS& low, const vrut::ReportedDS& high) {
+        return " (95 % interval " + standard_text(low) + " to " + standard_text(high) + ")";
+      };
+      std::printf("; as the standard reports it (capped at %.0f): median %s%s (censored values counted as such), of "
+                  "the mean curve %s%s passes/mm",
+                  vrut::standard_ds_cap, standard_text(reported_median).c_str(),
+                  median_ci.defined ? interval_text(median_ci.low, median_ci.high).c_str() : "",
+                  standard_text(reported_mean_curve).c_str(),
+                  interval_text(mean_curve_ci.low, mean_curve_ci.high).c_str());
       std::printf(" (%s)\nresults in %s\n", speed.c_str(), out.c_str());
     } else {
       std::printf("%s: rut depth %.2f mm at %.0f min, dynamic stability %s passes/mm",

@@ -144,6 +144,72 @@ TEST_CASE("the median of censored DS values is the Kaplan-Meier median", "[analy
   CHECK_THROWS(median({}));
 }
 
+// The distribution-free interval of a median, worked by hand: for n = 16,
+// P(Binomial(16, 1/2) <= 3) = (1 + 16 + 120 + 560) / 65536 = 697 / 65536, so
+// 2 x that = 0.0213 <= 0.05, while P(<= 4) = 2517 / 65536 gives 0.077: the
+// interval is x_(4) to x_(13), coverage 1 - 1394 / 65536. For n = 10:
+// P(<= 1) = 11 / 1024, P(<= 2) = 56 / 1024: x_(2) to x_(9), coverage
+// 1 - 22 / 1024. For n = 5 the widest, x_(1) to x_(5), covers only
+// 1 - 2 / 32 = 0.9375: no 95 % interval.
+TEST_CASE("the DS median's interval is the order statistics the binomial law gives", "[analysis][unit]") {
+  std::vector<vrut::ReportedDS> sixteen;
+  for (int v = 16; v >= 1; --v) sixteen.push_back({100.0 * v, false});  // unsorted on purpose
+  auto m = vrut::median_interval(sixteen);
+  REQUIRE(m.defined);
+  CHECK(m.low.value == 400.0);
+  CHECK(m.high.value == 1300.0);
+  CHECK_FALSE(m.high.censored);
+  CHECK(m.coverage == Approx(1.0 - 1394.0 / 65536.0).epsilon(1e-12));
+  // A bound above the high end leaves it a value; one at or below makes it a bound.
+  sixteen[0] = {1600.0, true};  // x_(16) only known to lie above 1600
+  CHECK_FALSE(vrut::median_interval(sixteen).high.censored);
+  sixteen[0] = {1600.0, false};
+  sixteen[10] = {600.0, true};  // x = 600 only a lower bound: the 13th could be higher
+  m = vrut::median_interval(sixteen);
+  CHECK(m.high.value == 1300.0);
+  CHECK(m.high.censored);
+  CHECK(m.low.value == 400.0);
+  std::vector<vrut::ReportedDS> ten;
+  for (int v = 1; v <= 10; ++v) ten.push_back({static_cast<double>(v), false});
+  m = vrut::median_interval(ten);
+  REQUIRE(m.defined);
+  CHECK(m.low.value == 2.0);
+  CHECK(m.high.value == 9.0);
+  CHECK(m.coverage == Approx(1.0 - 22.0 / 1024.0).epsilon(1e-12));
+  ten.resize(5);
+  CHECK_FALSE(vrut::median_interval(ten).defined);
+  ten.push_back({6.0, false});  // six: 2 / 64 = 0.031, x_(1) to x_(6)
+  m = vrut::median_interval(ten);
+  REQUIRE(m.defined);
+  CHECK(m.low.value == 1.0);
+  CHECK(m.high.value == 6.0);
+  CHECK(m.coverage == Approx(1.0 - 2.0 / 64.0).epsilon(1e-12));
+}
+
+// The DS of the mean curve, passes / mean window deformation, and its
+// interval through the Student-t interval of that mean, worked by hand:
+// deformations 1.0, 1.2, 1.4, 1.6 mm: mean 1.3, sd 0.2581989, t(3, 0.975)
+// 3.1824463, half-width 0.4108527; 630 passes give 630 / 1.7108527 =
+// 368.24 and 630 / 0.8891473 = 708.54 passes/mm. Deformations 1, 2, 3 mm:
+// mean 2, half-width 4.3026527 / sqrt(3) = 2.4841377 > 2, so no upper end
+// (the cap, censored) and 630 / 4.4841377 = 140.495 below.
+TEST_CASE("the DS of the mean curve has the interval of the mean deformation, inverted", "[analysis][unit]") {
+  auto ds = vrut::mean_curve_ds_interval({1.0, 1.2, 1.4, 1.6}, 630.0);
+  CHECK(ds.low.value == Approx(630.0 / 1.7108527).epsilon(1e-6));
+  CHECK(ds.high.value == Approx(630.0 / 0.8891473).epsilon(1e-6));
+  CHECK_FALSE(ds.low.censored);
+  CHECK_FALSE(ds.high.censored);
+  ds = vrut::mean_curve_ds_interval({1.0, 2.0, 3.0}, 630.0);
+  CHECK(ds.low.value == Approx(140.495).epsilon(1e-5));
+  CHECK(ds.high.value == vrut::standard_ds_cap);
+  CHECK(ds.high.censored);
+  // A low end past the cap is capped too.
+  ds = vrut::mean_curve_ds_interval({0.01, 0.011}, 630.0);
+  CHECK(ds.low.value == vrut::standard_ds_cap);
+  CHECK(ds.low.censored);
+  CHECK_THROWS(vrut::mean_curve_ds_interval({1.0}, 630.0));
+}
+
 TEST_CASE("resampling says how well a median of n specimens is known", "[analysis][unit]") {
   // Drawn plainly: every specimen alike, any resampled median is that value;
   // two values, 500 and 1500, half each: a sample of one gives either, so the

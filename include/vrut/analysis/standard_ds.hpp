@@ -17,6 +17,9 @@
 // where S sits at exactly 0.5, the midpoint to the next known value, so that
 // with nothing censored it is the ordinary median. Where S never falls to 0.5
 // the median is itself censored: above the largest value at risk.
+#include <boost/math/distributions/binomial.hpp>
+#include <boost/math/distributions/students_t.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -81,6 +84,72 @@ inline ReportedDS censored_median(std::vector<ReportedDS> values) {
   double largest = 0.0;
   for (const auto& v : values) largest = std::max(largest, v.value);
   return {largest, true};
+}
+
+// A confidence interval for the ensemble's DS median that assumes no
+// distribution: the order statistics x_(k) and x_(n+1-k) of the n values,
+// with k the largest for which the chance that the median lies outside,
+// 2 P(Binomial(n, 1/2) <= k - 1), is at most 1 - confidence; `coverage` is
+// then the interval's own (at least `confidence`). A censored value is a
+// lower bound on its true value, so the true order statistics lie at or
+// above the reported ones: the low end stays valid, and the high end is only
+// a lower bound ("above") where a censored value lies at or below it.
+// `defined` is false when n is too small for the confidence (n < 6 at 95 %).
+struct MedianInterval {
+  ReportedDS low, high;
+  double coverage = 0.0;
+  bool defined = false;
+};
+
+inline MedianInterval median_interval(std::vector<ReportedDS> values, double confidence = 0.95) {
+  if (values.empty()) throw std::invalid_argument("the median of no values");
+  if (!(confidence > 0.0 && confidence < 1.0)) throw std::invalid_argument("confidence must lie in (0, 1)");
+  std::sort(values.begin(), values.end(), [](const ReportedDS& a, const ReportedDS& b) {
+    return a.value < b.value || (a.value == b.value && !a.censored && b.censored);
+  });
+  const std::size_t n = values.size();
+  const boost::math::binomial_distribution<double> ranks(static_cast<double>(n), 0.5);
+  MedianInterval m;
+  for (std::size_t k = 1; 2 * k <= n + 1; ++k) {
+    const double outside = 2.0 * boost::math::cdf(ranks, static_cast<double>(k - 1));
+    if (outside > 1.0 - confidence) break;
+    m.defined = true;
+    m.coverage = 1.0 - outside;
+    m.low = {values[k - 1].value, false};
+    m.high = {values[n - k].value, false};
+    for (std::size_t i = 0; i <= n - k; ++i) m.high.censored = m.high.censored || values[i].censored;
+  }
+  return m;
+}
+
+// A confidence interval for the DS of an ensemble's mean curve. That DS is
+// passes / (mean of the specimens' deformation over the window), since the
+// mean curve's deformation at minutes 45 and 60 is the mean of theirs; the
+// Student-t interval of that mean, mapped through passes / x (decreasing),
+// is the DS's interval. Where the interval of the deformation reaches zero,
+// the DS has no upper end: reported at the cap, censored. Both ends are
+// reported as the standard would (capped). `window_deformation` in mm gives
+// passes/mm.
+struct DSInterval {
+  ReportedDS low, high;
+};
+
+inline DSInterval mean_curve_ds_interval(const std::vector<double>& window_deformation, double passes,
+                                         double confidence = 0.95) {
+  const std::size_t n = window_deformation.size();
+  if (n < 2) throw std::invalid_argument("an interval needs at least two specimens");
+  if (!(confidence > 0.0 && confidence < 1.0)) throw std::invalid_argument("confidence must lie in (0, 1)");
+  double sum = 0.0;
+  for (double d : window_deformation) sum += d;
+  const double mean = sum / n;
+  double squares = 0.0;
+  for (double d : window_deformation) squares += (d - mean) * (d - mean);
+  const boost::math::students_t t(static_cast<double>(n - 1));
+  const double half = boost::math::quantile(t, 0.5 + 0.5 * confidence) * std::sqrt(squares / (n - 1) / n);
+  DSInterval ds;
+  ds.low = report_ds(mean + half > 0.0 ? passes / (mean + half) : std::numeric_limits<double>::infinity(), false);
+  ds.high = report_ds(mean - half > 0.0 ? passes / (mean - half) : std::numeric_limits<double>::infinity(), false);
+  return ds;
 }
 
 // How well a median of n specimens is known, by resampling an ensemble: the
