@@ -5,13 +5,17 @@
 // of the medians of n specimens drawn with replacement from the ensemble,
 // over its median (analysis/standard_ds.hpp; smoothed draws). Beyond the
 // ensemble's own size the draws take its specimens, smoothed, as the whole
-// population: a projection.
+// population: a projection. First, for each ensemble, the DS median's and
+// the mean curve's DS with their 95 % intervals, as vrut-rutting reports
+// them today, so that ensembles run before it did get them too.
 //
 //   vrut-ds-resample [--within 0.15] out/mix1/seeds.csv out/mix2/seeds.csv ...
 #include <vrut/analysis/standard_ds.hpp>
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -28,28 +32,46 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 
-// The DS of each specimen in a seeds.csv, as the standard reports it.
-std::vector<vrut::ReportedDS> read_seeds_csv(const std::string& path) {
+// A seeds.csv: each specimen's DS as the standard reports it, and its
+// deformation from minute 45 to the end (mm).
+struct Ensemble {
+  std::vector<vrut::ReportedDS> ds;
+  std::vector<double> window_mm;
+};
+
+Ensemble read_seeds_csv(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path);
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(path + " is empty");
   const auto header = split(line);
-  int ds = -1, bound = -1;
+  int ds = -1, bound = -1, at_45 = -1, at_end = -1;
   for (int i = 0; i < static_cast<int>(header.size()); ++i) {
     if (header[i] == "dynamic_stability_passes_per_mm") ds = i;
     if (header[i] == "dynamic_stability_is_lower_bound") bound = i;
+    if (header[i] == "deformation_45min_mm") at_45 = i;
+    if (header[i] == "deformation_60min_mm") at_end = i;
   }
-  if (ds < 0 || bound < 0) throw std::runtime_error(path + " has no DS columns: is it a vrut-rutting seeds.csv?");
-  std::vector<vrut::ReportedDS> out;
+  if (ds < 0 || bound < 0 || at_45 < 0 || at_end < 0)
+    throw std::runtime_error(path + " has no DS or deformation columns: is it a vrut-rutting seeds.csv?");
+  Ensemble out;
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     const auto cells = split(line);
-    if (static_cast<int>(cells.size()) <= std::max(ds, bound)) throw std::runtime_error(path + ": a short line: " + line);
-    out.push_back(vrut::report_ds(std::stod(cells[ds]), cells[bound] == "1"));
+    if (static_cast<int>(cells.size()) <= std::max({ds, bound, at_45, at_end}))
+      throw std::runtime_error(path + ": a short line: " + line);
+    out.ds.push_back(vrut::report_ds(std::stod(cells[ds]), cells[bound] == "1"));
+    out.window_mm.push_back(std::stod(cells[at_end]) - std::stod(cells[at_45]));
   }
-  if (out.empty()) throw std::runtime_error(path + " lists no specimen");
+  if (out.ds.empty()) throw std::runtime_error(path + " lists no specimen");
   return out;
+}
+
+std::string ds_text(const vrut::ReportedDS& d) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%s%.0f", d.censored ? (d.value >= vrut::standard_ds_cap ? "> " : "above ") : "",
+                d.value);
+  return text;
 }
 
 }  // namespace
@@ -59,19 +81,35 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   double within = 0.15;
   int draws = 4000;
+  double passes = 630.0;
   app.add_option("seeds_csv", files, "seeds.csv of each ensemble")->required()->check(CLI::ExistingFile);
   app.add_option("--within", within, "the share of the median asked for")->check(CLI::Range(0.001, 1.0));
   app.add_option("--draws", draws, "resampled medians per specimen count")->check(CLI::Range(100, 1000000));
+  app.add_option("--window-passes", passes, "passes from minute 45 to the end, (t2 - t1) N C1 C2")
+      ->check(CLI::Range(1.0, 1e9));
   CLI11_PARSE(app, argc, argv);
   try {
     const std::vector<int> counts = {3, 5, 8, 10, 16, 20, 30, 40, 60, 80, 120, 160, 240, 320};
     for (const auto& f : files) {
-      const auto ds = read_seeds_csv(f);
+      const Ensemble e = read_seeds_csv(f);
+      const auto& ds = e.ds;
       const auto median = vrut::censored_median(ds);
       int censored = 0;
       for (const auto& d : ds) censored += d.censored;
-      std::printf("%s: %zu specimens (%d censored), DS median %s%.0f passes/mm\n", f.c_str(), ds.size(), censored,
-                  median.censored ? "above " : "", median.value);
+      std::printf("%s: %zu specimens (%d censored), DS median %s", f.c_str(), ds.size(), censored, ds_text(median).c_str());
+      const auto median_ci = vrut::median_interval(ds);
+      if (median_ci.defined)
+        std::printf(" (95 %% interval %s to %s, coverage %.3f)", ds_text(median_ci.low).c_str(),
+                    ds_text(median_ci.high).c_str(), median_ci.coverage);
+      double mean_window = 0.0;
+      for (double w : e.window_mm) mean_window += w / e.window_mm.size();
+      std::printf(" passes/mm; of the mean curve %s",
+                  ds_text(vrut::report_ds(mean_window > 0.0 ? passes / mean_window : HUGE_VAL, false)).c_str());
+      if (ds.size() >= 2) {
+        const auto curve_ci = vrut::mean_curve_ds_interval(e.window_mm, passes);
+        std::printf(" (95 %% interval %s to %s)", ds_text(curve_ci.low).c_str(), ds_text(curve_ci.high).c_str());
+      }
+      std::printf("\n");
       std::printf("  specimens  half-width of the median's 95 %% range, share of the median\n");
       int enough = -1;
       for (int n : counts) {
