@@ -1,0 +1,96 @@
+#pragma once
+// What a contact law sees of a contact in 3D, and the contact frame's
+// bookkeeping: the same conventions as geometry.hpp, with the shear a vector
+// in the contact's tangent plane.
+//   - The normal points from the first body to the second; a positive
+//     normal force pushes them apart.
+//   - The shear displacement and force are the second body's, relative to
+//     the first, in the plane normal to the contact.
+//   - A shear spring's stored force must turn with the contact: as the pair
+//     rolls or spins, the force that was tangent yesterday has a normal part
+//     today. turn_with_contact() carries it: the least rotation that takes
+//     the old normal to the new one, then the pair's mean spin about the
+//     normal, as YADE's ScGeom and PFC do; a last projection into the plane
+//     (keeping the magnitude, as LAMMPS' gran/hooke/history does) takes out
+//     what rounding leaves.
+#include <vrut/data/vec3.hpp>
+
+#include <Kokkos_Core.hpp>
+
+namespace vrut {
+
+struct ContactGeometry3 {
+  Vec3 normal;                    // unit, first -> second body
+  double overlap = 0.0;           // > 0 when touching
+  double normal_increment = 0.0;  // change of overlap during the last step
+  Vec3 shear_increment;           // tangential slip of the second body relative to the first, last step
+  double dt = 0.0;
+};
+
+// The kinematics of a contact: `normal` and `overlap` as above, each body's
+// branch vector (its centre to the contact point), velocity and angular
+// velocity. The relative velocity of the second body's material point at
+// the contact against the first's, over dt, split into normal and shear.
+KOKKOS_INLINE_FUNCTION ContactGeometry3 contact_kinematics(Vec3 normal, double overlap, Vec3 branch_1, Vec3 v_1,
+                                                           Vec3 w_1, Vec3 branch_2, Vec3 v_2, Vec3 w_2, double dt) {
+  const Vec3 relative = (v_2 + cross(w_2, branch_2)) - (v_1 + cross(w_1, branch_1));
+  const double along = dot(relative, normal);
+  ContactGeometry3 g;
+  g.normal = normal;
+  g.overlap = overlap;
+  g.normal_increment = -along * dt;  // approaching (along < 0) deepens the overlap
+  g.shear_increment = dt * (relative - along * normal);
+  g.dt = dt;
+  return g;
+}
+
+// Two spheres: centres x, radii r. The contact point lies in the middle of
+// the overlap.
+KOKKOS_INLINE_FUNCTION ContactGeometry3 sphere_sphere(Vec3 x_1, Vec3 v_1, Vec3 w_1, double r_1, Vec3 x_2, Vec3 v_2,
+                                                      Vec3 w_2, double r_2, double dt) {
+  const Vec3 d = x_2 - x_1;
+  const double distance = norm(d);
+  const Vec3 n = (1.0 / distance) * d;
+  const double overlap = r_1 + r_2 - distance;
+  return contact_kinematics(n, overlap, (r_1 - 0.5 * overlap) * n, v_1, w_1, -(r_2 - 0.5 * overlap) * n, v_2, w_2,
+                            dt);
+}
+
+// A sphere (second body) on a fixed plane through `point` with unit normal
+// `plane_normal` towards the sphere's side (first body, at rest). The
+// contact point lies on the plane.
+KOKKOS_INLINE_FUNCTION ContactGeometry3 plane_sphere(Vec3 point, Vec3 plane_normal, Vec3 x, Vec3 v, Vec3 w, double r,
+                                                     double dt) {
+  const double height = dot(x - point, plane_normal);
+  return contact_kinematics(plane_normal, r - height, Vec3{}, Vec3{}, Vec3{}, -height * plane_normal, v, w, dt);
+}
+
+// v turned about the unit axis k by the angle whose cosine and sine are c, s (Rodrigues).
+KOKKOS_INLINE_FUNCTION Vec3 rodrigues(Vec3 v, Vec3 k, double c, double s) {
+  return c * v + s * cross(k, v) + ((1.0 - c) * dot(k, v)) * k;
+}
+
+// A shear vector of the old contact frame carried into the new one: turned
+// by the least rotation from old_normal to new_normal, then by `twist`
+// (radians) about the new normal (dt times the pair's mean angular
+// velocity along it), then projected into the new tangent plane with its
+// magnitude kept.
+KOKKOS_INLINE_FUNCTION Vec3 turn_with_contact(Vec3 shear, Vec3 old_normal, Vec3 new_normal, double twist) {
+  const Vec3 axis = cross(old_normal, new_normal);
+  const double s = norm(axis);
+  if (s > 0.0) shear = rodrigues(shear, (1.0 / s) * axis, dot(old_normal, new_normal), s);
+  if (twist != 0.0) shear = rodrigues(shear, new_normal, cos(twist), sin(twist));
+  const double before = norm(shear);
+  const Vec3 in_plane = shear - dot(shear, new_normal) * new_normal;
+  const double after = norm(in_plane);
+  return after > 0.0 ? (before / after) * in_plane : in_plane;
+}
+
+// The Coulomb slider in 3D: a shear force longer than `limit` shortened to
+// it, its direction kept.
+KOKKOS_INLINE_FUNCTION Vec3 cap_magnitude(Vec3 f, double limit) {
+  const double length = norm(f);
+  return length > limit ? (limit / length) * f : f;
+}
+
+}  // namespace vrut
