@@ -5,6 +5,7 @@
 // Kokkos kernel on every backend.
 #include "spaces.hpp"
 
+#include <vrut/geometry/clump3.hpp>
 #include <vrut/integrate/rigid_rotation.hpp>
 
 #include <catch2/catch.hpp>
@@ -167,4 +168,61 @@ TEMPLATE_LIST_TEST_CASE("a tumbling body turns as Runge-Kutta on Euler's equatio
   CHECK(coarse_error / fine_error > 3.5);
   CHECK(coarse_error / fine_error < 4.5);
   CHECK(std::abs(vrut::rotational_energy(fine.q, fine.momentum, inertia) / energy - 1.0) < 1.6e-5);
+}
+
+// The mass properties of a clump of spheres (geometry/clump3.hpp):
+//   - one sphere: 4/3 pi r^3 rho and 2/5 m r^2 about every axis;
+//   - two equal spheres 2a apart along an oblique u: 2 (2/5 m r^2) about u,
+//     2 (2/5 m r^2 + m a^2) across it, u the axis of the least moment;
+//   - an L of four spheres, no symmetry: each principal axis, turned into
+//     the world, is an eigenvector of the inertia tensor worked out here
+//     directly in the world frame, and the members' offsets turned back
+//     give their centres.
+TEST_CASE("a clump's mass, principal moments and axes match closed forms", "[physics][bodies]") {
+  const double rho = 2700.0, r = 0.002, m = rho * 4.0 / 3.0 * M_PI * r * r * r;
+  const auto one = vrut::clump_properties({{0.1, 0.2, 0.3}}, {r}, rho);
+  CHECK(one.mass == Approx(m).epsilon(1e-14));
+  for (int k = 0; k < 3; ++k) CHECK(vrut::component(one.principal_moments, k) == Approx(0.4 * m * r * r).epsilon(1e-12));
+  CHECK(vrut::norm(one.offsets[0]) < 1e-15);
+
+  const vrut::Vec3 u{2.0 / 7.0, 3.0 / 7.0, 6.0 / 7.0}, middle{1.0, -2.0, 0.5};
+  const double a = 0.0025;
+  const auto pair = vrut::clump_properties({middle - a * u, middle + a * u}, {r, r}, rho);
+  CHECK(vrut::norm(pair.centre - middle) < 1e-14);
+  CHECK(pair.principal_moments.x == Approx(2 * 0.4 * m * r * r).epsilon(1e-9));
+  CHECK(pair.principal_moments.y == Approx(2 * (0.4 * m * r * r + m * a * a)).epsilon(1e-9));
+  CHECK(pair.principal_moments.z == Approx(2 * (0.4 * m * r * r + m * a * a)).epsilon(1e-9));
+  CHECK(std::abs(vrut::dot(vrut::rotate(pair.orientation, vrut::Vec3{1, 0, 0}), u)) == Approx(1.0).epsilon(1e-12));
+
+  const std::vector<vrut::Vec3> ell{{0, 0, 0}, {2 * r, 0, 0}, {4 * r, 0, 0}, {0, 2 * r, 0.5 * r}};
+  const std::vector<double> radii{r, r, r, 0.7 * r};
+  const auto body = vrut::clump_properties(ell, radii, rho);
+  // The world tensor, independently: each sphere's own 2/5 m r^2, and the
+  // parallel-axis terms written out component by component.
+  double tensor[3][3] = {};
+  for (std::size_t i = 0; i < ell.size(); ++i) {
+    const double mi = rho * 4.0 / 3.0 * M_PI * std::pow(radii[i], 3);
+    const vrut::Vec3 d = ell[i] - body.centre;
+    for (int p = 0; p < 3; ++p)
+      for (int q = 0; q < 3; ++q)
+        tensor[p][q] += (p == q ? 0.4 * mi * radii[i] * radii[i] + mi * vrut::dot(d, d) : 0.0) -
+                        mi * vrut::component(d, p) * vrut::component(d, q);
+  }
+  for (int k = 0; k < 3; ++k) {
+    vrut::Vec3 e{};
+    vrut::component(e, k) = 1.0;
+    const vrut::Vec3 axis = vrut::rotate(body.orientation, e);
+    vrut::Vec3 image{};
+    for (int p = 0; p < 3; ++p)
+      for (int q = 0; q < 3; ++q) vrut::component(image, p) += tensor[p][q] * vrut::component(axis, q);
+    const double moment = vrut::component(body.principal_moments, k);
+    INFO("axis " << k);
+    CHECK(vrut::norm(image - moment * axis) < 1e-10 * moment);
+  }
+  CHECK(body.principal_moments.x < body.principal_moments.y);
+  CHECK(body.principal_moments.y < body.principal_moments.z);
+  for (std::size_t i = 0; i < ell.size(); ++i)
+    CHECK(vrut::norm(body.centre + vrut::rotate(body.orientation, body.offsets[i]) - ell[i]) < 1e-15);
+  CHECK_THROWS(vrut::clump_properties({}, {}, rho));
+  CHECK_THROWS(vrut::clump_properties({{0, 0, 0}}, {-r}, rho));
 }
