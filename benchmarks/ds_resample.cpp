@@ -67,13 +67,6 @@ Ensemble read_seeds_csv(const std::string& path) {
   return out;
 }
 
-std::string ds_text(const vrut::ReportedDS& d) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%s%.0f", d.censored ? (d.value >= vrut::standard_ds_cap ? "> " : "above ") : "",
-                d.value);
-  return text;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -96,18 +89,18 @@ int main(int argc, char** argv) {
       const auto median = vrut::censored_median(ds);
       int censored = 0;
       for (const auto& d : ds) censored += d.censored;
-      std::printf("%s: %zu specimens (%d censored), DS median %s", f.c_str(), ds.size(), censored, ds_text(median).c_str());
+      std::printf("%s: %zu specimens (%d censored), DS median %s", f.c_str(), ds.size(), censored, vrut::reported_ds_text(median).c_str());
       const auto median_ci = vrut::median_interval(ds);
       if (median_ci.defined)
-        std::printf(" (95 %% interval %s to %s, coverage %.3f)", ds_text(median_ci.low).c_str(),
-                    ds_text(median_ci.high).c_str(), median_ci.coverage);
+        std::printf(" (95 %% interval %s to %s, coverage %.3f)", vrut::reported_ds_text(median_ci.low).c_str(),
+                    vrut::reported_ds_text(median_ci.high).c_str(), median_ci.coverage);
       double mean_window = 0.0;
       for (double w : e.window_mm) mean_window += w / e.window_mm.size();
       std::printf(" passes/mm; of the mean curve %s",
-                  ds_text(vrut::report_ds(mean_window > 0.0 ? passes / mean_window : HUGE_VAL, false)).c_str());
+                  vrut::reported_ds_text(vrut::report_ds(mean_window > 0.0 ? passes / mean_window : HUGE_VAL, false)).c_str());
       if (ds.size() >= 2) {
         const auto curve_ci = vrut::mean_curve_ds_interval(e.window_mm, passes);
-        std::printf(" (95 %% interval %s to %s)", ds_text(curve_ci.low).c_str(), ds_text(curve_ci.high).c_str());
+        std::printf(" (95 %% interval %s to %s)", vrut::reported_ds_text(curve_ci.low).c_str(), vrut::reported_ds_text(curve_ci.high).c_str());
       }
       std::printf("\n");
       std::printf("  specimens  half-width of the median's 95 %% range, share of the median\n");

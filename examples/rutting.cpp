@@ -557,8 +557,7 @@ int main(int argc, char** argv) {
     for (const auto& r : runs) window_mm.push_back((r.deformation_final - r.deformation_at_ds_start) * 1e3);
     const bool intervals = ensemble && !interrupted && runs.size() >= 2;
     const vrut::DSInterval mean_curve_ci =
-        intervals ? vrut::mean_curve_ds_interval(window_mm, (wt.minutes - wt.ds_from_minute) * wt.passes_per_minute)
-                  : vrut::DSInterval{};
+        intervals ? vrut::mean_curve_ds_interval(window_mm, wt.ds_window_passes()) : vrut::DSInterval{};
     if (ensemble) {
       std::ostringstream per_seed;
       per_seed.precision(17);
@@ -642,12 +641,13 @@ int main(int argc, char** argv) {
       if (!interrupted) {
         e["dynamic_stability_standard_median"] = standard_ds_json(reported_median);
         e["dynamic_stability_standard_of_mean_curve"] = standard_ds_json(reported_mean_curve);
-        if (median_ci.defined)
+        if (intervals && median_ci.defined)
           e["dynamic_stability_standard_median_ci95"] = {{"low", standard_ds_json(median_ci.low)},
                                                          {"high", standard_ds_json(median_ci.high)},
                                                          {"coverage", median_ci.coverage}};
-        e["dynamic_stability_standard_of_mean_curve_ci95"] = {{"low", standard_ds_json(mean_curve_ci.low)},
-                                                              {"high", standard_ds_json(mean_curve_ci.high)}};
+        if (intervals)
+          e["dynamic_stability_standard_of_mean_curve_ci95"] = {{"low", standard_ds_json(mean_curve_ci.low)},
+                                                                {"high", standard_ds_json(mean_curve_ci.high)}};
       }
       nlohmann::json per = nlohmann::json::array();
       for (std::size_t k = 0; k < runs.size(); ++k)
@@ -684,10 +684,7 @@ int main(int argc, char** argv) {
       std::snprintf(text, sizeof text, "%s%.0f", lower_bound ? "above " : "", ds);
       return std::string(text);
     };
-    // As the standard writes a DS: "> 6000" past its cap, ours "above N".
-    auto standard_text = [&](const vrut::ReportedDS& d) {
-      return d.censored && d.value >= vrut::standard_ds_cap ? "> " + ds_text(d.value, false) : ds_text(d.value, d.censored);
-    };
+    const auto& standard_text = vrut::reported_ds_text;  // "> 6000" past the cap, ours "above N"
     const std::string speed = [&] {
       char text[128];
       std::snprintf(text, sizeof text, "%zu disks, %ld steps, %.0f s, %.3g particle-steps/s", disks, res.steps,
@@ -717,7 +714,7 @@ int main(int argc, char** argv) {
                   vrut::standard_ds_cap, standard_text(reported_median).c_str(),
                   median_ci.defined ? interval_text(median_ci.low, median_ci.high).c_str() : "",
                   standard_text(reported_mean_curve).c_str(),
-                  interval_text(mean_curve_ci.low, mean_curve_ci.high).c_str());
+                  intervals ? interval_text(mean_curve_ci.low, mean_curve_ci.high).c_str() : "");
       std::printf(" (%s)\nresults in %s\n", speed.c_str(), out.c_str());
     } else {
       std::printf("%s: rut depth %.2f mm at %.0f min, dynamic stability %s passes/mm",

@@ -23,9 +23,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -109,17 +111,26 @@ inline MedianInterval median_interval(std::vector<ReportedDS> values, double con
   });
   const std::size_t n = values.size();
   const boost::math::binomial_distribution<double> ranks(static_cast<double>(n), 0.5);
+  // The largest k whose chance of missing the median is within 1 - confidence.
+  std::size_t k = 0;
+  while (2 * (k + 1) <= n + 1 && 2.0 * boost::math::cdf(ranks, static_cast<double>(k)) <= 1.0 - confidence) ++k;
   MedianInterval m;
-  for (std::size_t k = 1; 2 * k <= n + 1; ++k) {
-    const double outside = 2.0 * boost::math::cdf(ranks, static_cast<double>(k - 1));
-    if (outside > 1.0 - confidence) break;
-    m.defined = true;
-    m.coverage = 1.0 - outside;
-    m.low = {values[k - 1].value, false};
-    m.high = {values[n - k].value, false};
-    for (std::size_t i = 0; i <= n - k; ++i) m.high.censored = m.high.censored || values[i].censored;
-  }
+  if (k == 0) return m;
+  m.defined = true;
+  m.coverage = 1.0 - 2.0 * boost::math::cdf(ranks, static_cast<double>(k - 1));
+  m.low = {values[k - 1].value, false};
+  m.high = {values[n - k].value, false};
+  for (std::size_t i = 0; i <= n - k; ++i) m.high.censored = m.high.censored || values[i].censored;
   return m;
+}
+
+// A DS as text the way the standard writes it: "> 6000" past the cap, and
+// (ours) "above N" for a DS the curve does not resolve.
+inline std::string reported_ds_text(const ReportedDS& d) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%s%.0f", d.censored ? (d.value >= standard_ds_cap ? "> " : "above ") : "",
+                d.value);
+  return text;
 }
 
 // A confidence interval for the DS of an ensemble's mean curve. That DS is

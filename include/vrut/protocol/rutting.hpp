@@ -43,6 +43,8 @@ struct WheelTracking {
 
   double contact_length() const { return wheel_mass * gravity / (pressure * wheel_width); }
   double loading_time() const { return minutes * 60.0 * contact_length() / travel; }  // s, cumulative under the wheel
+  // The passes of the DS window, (t2 - t1) N C1 C2 with C1 = C2 = 1.
+  double ds_window_passes() const { return (minutes - ds_from_minute) * passes_per_minute; }
   double plate_force() const { return pressure * contact_length() * wheel_width; }
 
   void validate(double section_width_m) const {
@@ -370,7 +372,7 @@ inline void finish_deformation(RuttingResult& res, const WheelTracking& wt) {
       }
     res.deformation_resolution = 2.0 * std::sqrt(2.0) * std::sqrt(residuals / (n - 2.0));
   }
-  const double passes = (wt.minutes - wt.ds_from_minute) * wt.passes_per_minute;
+  const double passes = wt.ds_window_passes();
   const double dd_mm = (res.deformation_final - res.deformation_at_ds_start) * 1e3;
   const double resolution_mm = res.deformation_resolution * 1e3;
   if (resolution_mm > 0.0 && dd_mm < resolution_mm) {
