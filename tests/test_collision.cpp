@@ -1,5 +1,6 @@
 // Two disks colliding head-on on a linear spring: the contact lasts
 // pi sqrt(m_eff / k_n) and, without damping, the kinetic energy comes back.
+#include "contact_timing.hpp"
 #include "spaces.hpp"
 
 #include <vrut/vrut.hpp>
@@ -43,17 +44,9 @@ CollisionResult collide() {
     return 2.0 * r - norm(x(1) - x(0));
   };
   const double e0 = kinetic();
-  double previous = overlap(), t_in = -1.0, t_out = -1.0;
-  for (int s = 0; s < 200000 && t_out < 0.0; ++s) {
-    sim.step(dt);
-    const double now = overlap();
-    // Crossings of zero overlap, interpolated between steps.
-    if (previous <= 0.0 && now > 0.0) t_in = sim.time() - dt * now / (now - previous);
-    if (previous > 0.0 && now <= 0.0) t_out = sim.time() - dt * now / (now - previous);
-    previous = now;
-  }
+  const double duration = vrut_test::contact_duration(sim, dt, overlap);
   sim.run(100, dt);
-  return {t_out - t_in, e0, kinetic(), m_eff, kn};
+  return {duration, e0, kinetic(), m_eff, kn};
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
-// The 3D neighbour search with periodic axes (neighbor/cell_list3.hpp)
+// The engine's contact list in 3D, with periodic axes (core/contact_list.hpp)
 // against brute force over every pair by the nearest image, on every
 // backend; a pair seen across a periodic face, and the inputs refused.
 #include "spaces.hpp"
 
-#include <vrut/neighbor/cell_list3.hpp>
+#include <vrut/contact/composite.hpp>
+#include <vrut/core/contact_list.hpp>
+#include <vrut/neighbor/periodic_box3.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -20,22 +22,23 @@ template <class Space>
 Pairs found(const std::vector<vrut::Vec3>& centres, const std::vector<double>& radii, const vrut::PeriodicBox3& box,
             double skin) {
   const int n = static_cast<int>(centres.size());
-  Kokkos::View<vrut::Vec3*, typename Space::memory_space> x("x", n);
-  Kokkos::View<double*, typename Space::memory_space> r("r", n);
-  auto hx = Kokkos::create_mirror_view(x);
-  auto hr = Kokkos::create_mirror_view(r);
+  vrut::Particles<typename Space::memory_space, vrut::Dim3> ps(n);
+  auto hx = Kokkos::create_mirror_view(ps.position);
+  auto hr = Kokkos::create_mirror_view(ps.radius);
   for (int i = 0; i < n; ++i) hx(i) = centres[i], hr(i) = radii[i];
-  Kokkos::deep_copy(x, hx);
-  Kokkos::deep_copy(r, hr);
-  const auto list = vrut::find_pairs(Space(), x, r, box, skin);
-  auto start = vrut_test::to_host(list.start);
+  Kokkos::deep_copy(ps.position, hx);
+  Kokkos::deep_copy(ps.radius, hr);
+  vrut::ContactList<vrut::in_dimension_t<vrut::Linear, vrut::Dim3>, Space, vrut::Dim3> list;
+  list.box = box;
+  list.rebuild(Space(), ps, skin);
+  auto count = vrut_test::to_host(list.count);
   auto partner = vrut_test::to_host(list.partner);
   Pairs pairs;
   int misordered = 0;  // partners must exceed i, ascending
   for (int i = 0; i < n; ++i)
-    for (int k = start(i); k < start(i + 1); ++k) {
-      misordered += partner(k) <= i || (k > start(i) && partner(k) <= partner(k - 1));
-      pairs.insert({i, partner(k)});
+    for (int k = 0; k < count(i); ++k) {
+      misordered += partner(i, k) <= i || (k > 0 && partner(i, k) <= partner(i, k - 1));
+      pairs.insert({i, partner(i, k)});
     }
   CHECK(misordered == 0);
   return pairs;
@@ -103,5 +106,5 @@ TEMPLATE_LIST_TEST_CASE("a pair is seen across a periodic face, and not across a
   box.high.y = 0.0055;  // 5.5 mm along y, periodic: 3 reaches of 2 mm do not fit
   box.periodic[1] = true;
   const std::vector<vrut::Vec3> low{{0.005, 0.002, 0.0}};
-  CHECK_THROWS_WITH(found<TestType>(low, {0.001}, box, 0.0), Catch::Contains("at least 3 reaches"));
+  CHECK_THROWS_WITH(found<TestType>(low, {0.001}, box, 0.0), Catch::Contains("at least 3 contact reaches"));
 }

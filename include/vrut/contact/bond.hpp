@@ -1,5 +1,7 @@
 #pragma once
 // Bond slots of a composed law: none, or a PFC-style contact bond.
+#include <vrut/data/dimension.hpp>
+
 #include <Kokkos_Core.hpp>
 
 namespace vrut {
@@ -10,13 +12,14 @@ struct NoBond {
   KOKKOS_INLINE_FUNCTION static bool intact(const state_type&) { return false; }
   KOKKOS_INLINE_FUNCTION static void bond(state_type&) {}
   KOKKOS_INLINE_FUNCTION static void release(state_type&) {}
-  KOKKOS_INLINE_FUNCTION static bool holds(const params_type&, double, double) { return false; }
+  template <class Shear>
+  KOKKOS_INLINE_FUNCTION static bool holds(const params_type&, double, const Shear&) { return false; }
 };
 
 // A contact bond: while intact the contact carries tension and its shear is
 // not limited by friction. It breaks when the tension exceeds the normal
-// strength or the shear force exceeds the shear strength (both in N), and
-// never heals.
+// strength or the shear force's magnitude exceeds the shear strength (both
+// in N), and never heals.
 struct ContactBond {
   struct params_type {
     double normal_strength = 0.0;
@@ -26,8 +29,9 @@ struct ContactBond {
   KOKKOS_INLINE_FUNCTION static bool intact(const state_type& s) { return s.intact != 0; }
   KOKKOS_INLINE_FUNCTION static void bond(state_type& s) { s.intact = 1; }
   KOKKOS_INLINE_FUNCTION static void release(state_type& s) { s.intact = 0; }
-  KOKKOS_INLINE_FUNCTION static bool holds(const params_type& p, double normal, double shear) {
-    return -normal <= p.normal_strength && shear <= p.shear_strength && -shear <= p.shear_strength;
+  template <class Shear>
+  KOKKOS_INLINE_FUNCTION static bool holds(const params_type& p, double normal, const Shear& shear) {
+    return -normal <= p.normal_strength && magnitude(shear) <= p.shear_strength;
   }
 };
 

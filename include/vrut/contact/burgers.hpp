@@ -20,7 +20,11 @@
 // (dt -> 0 gives f' - f = K_m du). Its instantaneous stiffness 1/D is below
 // K_m, so K_m bounds it for the critical time step. tests/test_burgers.cpp
 // checks it against the exact creep and relaxation solutions.
+//
+// The element is linear, so in 3D it acts on the shear vector as a whole:
+// the same update with vectors for f, u and u_k (BurgersShearIn<Dim3>).
 #include <vrut/contact/geometry.hpp>
+#include <vrut/data/dimension.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -38,10 +42,15 @@ struct BurgersElement {
   double a = 0.0, b = 0.0, c = 0.0, d = 0.0, kelvin_release = 0.0 /* 1 - b/a */, half_dt_kelvin = 0.0;
 };
 
-struct BurgersHistory {
-  double force = 0.0;   // f at the end of the last step
-  double kelvin = 0.0;  // u_k
+// The history of an element: scalars, or in 3D shear vectors.
+template <class Value>
+struct BurgersHistoryOf {
+  Value force{};   // f at the end of the last step
+  Value kelvin{};  // u_k
 };
+using BurgersHistory = BurgersHistoryOf<double>;
+
+template <class T> struct same_type { using type = T; };
 
 // The coefficients of burgers_step for time step dt, the same operations in
 // the same order, so a prepared element gives the same bits as one that is not.
@@ -58,10 +67,12 @@ KOKKOS_INLINE_FUNCTION void burgers_prepare(BurgersElement& e, double dt) {
 
 // One trapezoidal step of a Burger's element: displacement increment du
 // (positive loads it), returns the new force.
-KOKKOS_INLINE_FUNCTION double burgers_step(const BurgersElement& e, BurgersHistory& h, double du, double dt) {
+template <class Value>
+KOKKOS_INLINE_FUNCTION Value burgers_step(const BurgersElement& e, BurgersHistoryOf<Value>& h,
+                                          typename same_type<Value>::type du, double dt) {
   BurgersElement k = e;
   if (e.prepared_dt != dt) burgers_prepare(k, dt);
-  const double f = (du + k.kelvin_release * h.kelvin - k.c * h.force) / k.d;
+  const Value f = (du + k.kelvin_release * h.kelvin - k.c * h.force) / k.d;
   h.kelvin = (k.b * h.kelvin + k.half_dt_kelvin * (f + h.force)) / k.a;
   h.force = f;
   return f;
@@ -71,7 +82,8 @@ KOKKOS_INLINE_FUNCTION double burgers_step(const BurgersElement& e, BurgersHisto
 struct BurgersNormal {
   using params_type = BurgersElement;
   using state_type = BurgersHistory;
-  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const ContactGeometry& g) {
+  template <class Geometry>
+  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const Geometry& g) {
     return burgers_step(p, s, g.normal_increment, g.dt);
   }
   static void prepare(params_type& p, double dt) { burgers_prepare(p, dt); }
@@ -83,20 +95,29 @@ struct BurgersNormal {
 };
 
 // Shear slot: u is minus the slip of the second body, so the force (on the
-// second body, along the tangent) resists the slip, as the linear spring does.
-struct BurgersShear {
+// second body, in the tangent) resists the slip, as the linear spring does.
+template <class D>
+struct BurgersShearIn {
+  using dimension = D;
   using params_type = BurgersElement;
-  using state_type = BurgersHistory;
-  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const ContactGeometry& g) {
+  using shear_type = typename D::shear;
+  using state_type = BurgersHistoryOf<shear_type>;
+  KOKKOS_INLINE_FUNCTION static shear_type force(const params_type& p, state_type& s, const ContactGeometryIn<D>& g) {
     return burgers_step(p, s, -g.shear_increment, g.dt);
   }
   static void prepare(params_type& p, double dt) { burgers_prepare(p, dt); }
   // Coulomb cap: the stored force slides back to the limit; the Kelvin
   // element keeps its displacement.
-  KOKKOS_INLINE_FUNCTION static double limit(const params_type&, state_type& s, double max_abs) {
-    return s.force = clamp_magnitude(s.force, max_abs);
+  KOKKOS_INLINE_FUNCTION static shear_type limit(const params_type&, state_type& s, double max_abs) {
+    return s.force = cap_magnitude(s.force, max_abs);
+  }
+  template <class Turn>
+  KOKKOS_INLINE_FUNCTION static void turn(state_type& s, const Turn& turn) {
+    s.force = turn(s.force);
+    s.kelvin = turn(s.kelvin);
   }
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) { return p.maxwell_stiffness; }
 };
+using BurgersShear = BurgersShearIn<Dim2>;
 
 }  // namespace vrut

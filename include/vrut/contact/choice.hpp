@@ -9,20 +9,29 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <type_traits>
+
 namespace vrut {
+
+// The choice's parameters, the same type in 2D and 3D.
+template <class FirstParams, class SecondParams>
+struct ChoiceParams {
+  int use_second = 0;
+  FirstParams first;
+  SecondParams second;
+};
 
 template <class First, class Second>
 struct Choice {
   static_assert(check_contact_law<First>(), "vrut::Choice: First is not a contact law");
   static_assert(check_contact_law<Second>(), "vrut::Choice: Second is not a contact law");
+  static_assert(std::is_same_v<law_dimension_t<First>, law_dimension_t<Second>>,
+                "vrut::Choice: First and Second are laws of different dimensions");
 
+  using dimension = law_dimension_t<First>;
   static constexpr bool uses_mass = law_uses_mass<First>() || law_uses_mass<Second>();
 
-  struct params_type {
-    int use_second = 0;
-    typename First::params_type first;
-    typename Second::params_type second;
-  };
+  using params_type = ChoiceParams<typename First::params_type, typename Second::params_type>;
   struct state_type {
     typename First::state_type first;
     typename Second::state_type second;
@@ -41,13 +50,14 @@ struct Choice {
     return c;
   }
 
-  KOKKOS_INLINE_FUNCTION static ContactForce force(const params_type& p, state_type& s, const ContactGeometry& g) {
+  KOKKOS_INLINE_FUNCTION static ContactForceIn<dimension> force(const params_type& p, state_type& s,
+                                                                const ContactGeometryIn<dimension>& g) {
     if (p.use_second) {
-      const ContactForce f = Second::force(p.second, s.second, g);
+      const ContactForceIn<dimension> f = Second::force(p.second, s.second, g);
       if (!is_bonded<Second>(s.second)) s.first = typename First::state_type{};  // a broken bond stays broken
       return f;
     }
-    const ContactForce f = First::force(p.first, s.first, g);
+    const ContactForceIn<dimension> f = First::force(p.first, s.first, g);
     if (!is_bonded<First>(s.first)) s.second = typename Second::state_type{};
     return f;
   }
@@ -67,6 +77,16 @@ struct Choice {
     make_bonded<First>(s.first);
     make_bonded<Second>(s.second);
   }
+  template <class Turn>
+  KOKKOS_INLINE_FUNCTION static void turn(state_type& s, const Turn& turn) {
+    turn_history<First>(s.first, turn);
+    turn_history<Second>(s.second, turn);
+  }
+};
+
+template <class First, class Second, class D>
+struct in_dimension<Choice<First, Second>, D> {
+  using type = Choice<in_dimension_t<First, D>, in_dimension_t<Second, D>>;
 };
 
 }  // namespace vrut

@@ -4,8 +4,13 @@
 //
 // Normal slot: params_type, state_type,
 //   double force(const params_type&, state_type&, const ContactGeometry&), double stiffness(params).
-// Shear slot: the same, plus double limit(const params_type&, state_type&, double max_abs),
-//   which caps the stored shear force (the Coulomb slider).
+// Shear slot: the same with the shear value of its dimension (double in 2D,
+//   Vec3 in 3D; data/dimension.hpp) in place of the double, plus
+//   limit(const params_type&, state_type&, double max_abs), which caps the
+//   stored shear force's magnitude (the Coulomb slider). A shear slot that is
+//   a template on its dimension (LinearShearIn<D>) gives the law both forms:
+//   Composite<N, LinearShearIn<Dim2>, B> in 3D is Composite<N, LinearShearIn<Dim3>, B>,
+//   with the same params_type.
 // Bond slot: see bond.hpp.
 // A normal slot with history may also provide
 //   void cut_tension(const params_type&, state_type&),
@@ -34,28 +39,36 @@ struct has_cut_tension<N, std::void_t<decltype(N::cut_tension(std::declval<const
     : std::true_type {};
 }  // namespace detail
 
+// A composed law's parameters, the same type in 2D and 3D.
+template <class NormalParams, class ShearParams, class BondParams>
+struct CompositeParams {
+  NormalParams normal;
+  ShearParams shear;
+  BondParams bond;
+  double friction = 0.0;  // Coulomb coefficient, used where no bond holds
+};
+
 template <class Normal, class Shear, class Bond = NoBond>
 struct Composite {
   using normal_slot = Normal;
   using shear_slot = Shear;
   using bond_slot = Bond;
+  using dimension = law_dimension_t<Shear>;
+  using shear_type = typename dimension::shear;
   static constexpr bool uses_mass = law_uses_mass<Normal>() || law_uses_mass<Shear>();
 
-  struct params_type {
-    typename Normal::params_type normal;
-    typename Shear::params_type shear;
-    typename Bond::params_type bond;
-    double friction = 0.0;  // Coulomb coefficient, used where no bond holds
-  };
+  using params_type =
+      CompositeParams<typename Normal::params_type, typename Shear::params_type, typename Bond::params_type>;
   struct state_type {
     typename Normal::state_type normal;
     typename Shear::state_type shear;
     typename Bond::state_type bond;
   };
 
-  KOKKOS_INLINE_FUNCTION static ContactForce force(const params_type& p, state_type& s, const ContactGeometry& g) {
+  KOKKOS_INLINE_FUNCTION static ContactForceIn<dimension> force(const params_type& p, state_type& s,
+                                                                const ContactGeometryIn<dimension>& g) {
     double fn = Normal::force(p.normal, s.normal, g);
-    double fs = Shear::force(p.shear, s.shear, g);
+    shear_type fs = Shear::force(p.shear, s.shear, g);
     if (Bond::intact(s.bond)) {
       if (Bond::holds(p.bond, fn, fs)) return {fn, fs};
       Bond::release(s.bond);
@@ -78,6 +91,16 @@ struct Composite {
   }
   KOKKOS_INLINE_FUNCTION static bool bonded(const state_type& s) { return Bond::intact(s.bond); }
   KOKKOS_INLINE_FUNCTION static void bond(state_type& s) { Bond::bond(s.bond); }
+  template <class Turn>
+  KOKKOS_INLINE_FUNCTION static void turn(state_type& s, const Turn& turn) {
+    turn_history<Normal>(s.normal, turn);
+    turn_history<Shear>(s.shear, turn);
+  }
+};
+
+template <class Normal, class Shear, class Bond, class D>
+struct in_dimension<Composite<Normal, Shear, Bond>, D> {
+  using type = Composite<in_dimension_t<Normal, D>, in_dimension_t<Shear, D>, Bond>;
 };
 
 // The two laws of the core, and helpers that spell their parameters.

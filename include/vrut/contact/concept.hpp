@@ -9,19 +9,54 @@
 //     KOKKOS_INLINE_FUNCTION static double stiffness(const params_type&);  // for the time step
 //   };
 //
+// The geometry and force are ContactGeometryIn<D> and ContactForceIn<D> of
+// the law's dimension D (data/dimension.hpp): a law declares it with
+// `using dimension = Dim3;`, and without it is a 2D law, written with
+// ContactGeometry and ContactForce.
+//
 // Optional: `static bool bonded(const state_type&)` (a bonded contact is kept,
 // and evaluated, while its disks are apart), `static void bond(state_type&)`
 // (called for every touching pair by Simulation::bond_touching_contacts), and
 // `static void prepare(params_type&, double dt)` (called on the host for every
 // material pair whenever the time step changes, so that a law can work out
 // once what depends only on its parameters and dt; force() must give the same
-// result with or without it).
+// result with or without it). A 3D law with history that lies in the
+// tangent plane (a shear spring's force) provides
+// `template <class Turn> static void turn(state_type&, const Turn& turn)`,
+// which replaces each such vector v by turn(v) as the contact's frame turns
+// (contact/geometry3.hpp, ContactTurn).
 #include <vrut/contact/geometry.hpp>
+#include <vrut/data/dimension.hpp>
 
 #include <type_traits>
 #include <utility>
 
 namespace vrut {
+
+// The dimension a law is written for: its member type `dimension`, else 2D.
+template <class L, class = void>
+struct law_dimension { using type = Dim2; };
+template <class L>
+struct law_dimension<L, std::void_t<typename L::dimension>> { using type = typename L::dimension; };
+template <class L>
+using law_dimension_t = typename law_dimension<L>::type;
+
+template <class T> struct is_dimension : std::false_type {};
+template <> struct is_dimension<Dim2> : std::true_type {};
+template <> struct is_dimension<Dim3> : std::true_type {};
+
+// A law's form in dimension D, so that one law (Linear, the rutting test's
+// laws) serves 2D and 3D. A law written for D is its own form; a slot that
+// is a template on its dimension alone (LinearShearIn<D>) takes D; the
+// composed laws (Composite, Choice) rebind their slots. Any other law keeps
+// its dimension, and the engine says so where it does not match.
+template <class L, class D, class = void>
+struct in_dimension { using type = L; };
+template <template <class> class Slot, class Old, class D>
+struct in_dimension<Slot<Old>, D, std::enable_if_t<is_dimension<Old>::value>> { using type = Slot<D>; };
+template <class L, class D>
+using in_dimension_t = typename in_dimension<L, D>::type;
+
 namespace detail {
 
 template <class, class = void> struct has_params_type : std::false_type {};
@@ -33,11 +68,11 @@ template <class, class = void> struct has_force : std::false_type {};
 template <class L>
 struct has_force<L, std::void_t<decltype(L::force(std::declval<const typename L::params_type&>(),
                                                   std::declval<typename L::state_type&>(),
-                                                  std::declval<const ContactGeometry&>()))>>
+                                                  std::declval<const ContactGeometryIn<law_dimension_t<L>>&>()))>>
     : std::is_convertible<decltype(L::force(std::declval<const typename L::params_type&>(),
                                             std::declval<typename L::state_type&>(),
-                                            std::declval<const ContactGeometry&>())),
-                          ContactForce> {};
+                                            std::declval<const ContactGeometryIn<law_dimension_t<L>>&>())),
+                          ContactForceIn<law_dimension_t<L>>> {};
 
 template <class, class = void> struct has_stiffness : std::false_type {};
 template <class L>
@@ -56,6 +91,11 @@ template <class, class = void> struct has_prepare : std::false_type {};
 template <class L>
 struct has_prepare<L, std::void_t<decltype(L::prepare(std::declval<typename L::params_type&>(), 0.0))>>
     : std::true_type {};
+
+template <class, class, class = void> struct has_turn : std::false_type {};
+template <class L, class Turn>
+struct has_turn<L, Turn, std::void_t<decltype(L::turn(std::declval<typename L::state_type&>(),
+                                                      std::declval<const Turn&>()))>> : std::true_type {};
 
 template <class, class = void> struct has_uses_mass : std::false_type {};
 template <class L> struct has_uses_mass<L, std::void_t<decltype(L::uses_mass)>> : std::bool_constant<L::uses_mass> {};
@@ -81,7 +121,8 @@ constexpr bool check_contact_law() {
   if constexpr (detail::has_params_type<Law>::value && detail::has_state_type<Law>::value) {
     static_assert(detail::has_force<Law>::value,
                   "vrut contact law: missing 'static ContactForce force(const params_type&, state_type&, "
-                  "const ContactGeometry&)'");
+                  "const ContactGeometry&)' (ContactForceIn<Dim3> and ContactGeometryIn<Dim3> for a law whose "
+                  "dimension is Dim3)");
     static_assert(detail::has_stiffness<Law>::value,
                   "vrut contact law: missing 'static double stiffness(const params_type&)' (used for the "
                   "critical time step)");
@@ -110,6 +151,14 @@ KOKKOS_INLINE_FUNCTION void make_bonded(typename Law::state_type& s) {
 template <class Law>
 constexpr bool law_uses_mass() {
   return detail::has_uses_mass<Law>::value;
+}
+
+// Carries a 3D law's tangent-plane history into the contact's new frame
+// (see `turn` above); a law without it keeps none.
+template <class Law, class Turn>
+KOKKOS_INLINE_FUNCTION void turn_history(typename Law::state_type& s, const Turn& turn) {
+  if constexpr (detail::has_turn<Law, Turn>::value) Law::turn(s, turn);
+  else (void)s, (void)turn;
 }
 
 // Host-side: a law's per-time-step preparation, where it has one.

@@ -25,7 +25,8 @@ struct FilmNormal {
   // Only the film's force is history; the stones' spring is elastic.
   using state_type = BurgersHistory;
 
-  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const ContactGeometry& g) {
+  template <class Geometry>
+  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const Geometry& g) {
     double f = burgers_step(p.film, s, g.normal_increment, g.dt);
     if (p.stone_stiffness > 0.0 && g.overlap > p.thickness) f += p.stone_stiffness * (g.overlap - p.thickness);
     return f;
@@ -47,35 +48,47 @@ struct FilmNormal {
 // bear on each other do not slide below their friction, as a creeping film
 // alone would. The Coulomb cap takes the stones' part first (they slide),
 // then the film's.
-struct FilmShear {
-  struct params_type {
-    BurgersElement film;
-    double thickness = 0.0;        // m, as FilmNormal's
-    double stone_stiffness = 0.0;  // N/m; 0: no stones
-  };
+struct FilmShearParams {
+  BurgersElement film;
+  double thickness = 0.0;        // m, as FilmNormal's
+  double stone_stiffness = 0.0;  // N/m; 0: no stones
+};
+
+template <class D>
+struct FilmShearIn {
+  using dimension = D;
+  using params_type = FilmShearParams;
+  using shear_type = typename D::shear;
   struct state_type {
-    BurgersHistory film;
-    double stone = 0.0;  // the stones' shear force
+    BurgersHistoryOf<shear_type> film;
+    shear_type stone{};  // the stones' shear force
   };
-  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const ContactGeometry& g) {
-    const double f = burgers_step(p.film, s.film, -g.shear_increment, g.dt);
+  KOKKOS_INLINE_FUNCTION static shear_type force(const params_type& p, state_type& s, const ContactGeometryIn<D>& g) {
+    const shear_type f = burgers_step(p.film, s.film, -g.shear_increment, g.dt);
     if (p.stone_stiffness > 0.0 && g.overlap > p.thickness)
       s.stone -= p.stone_stiffness * g.shear_increment;
     else
-      s.stone = 0.0;
+      s.stone = shear_type{};
     return f + s.stone;
   }
   static void prepare(params_type& p, double dt) { burgers_prepare(p.film, dt); }
-  KOKKOS_INLINE_FUNCTION static double limit(const params_type&, state_type& s, double max_abs) {
-    const double film = clamp_magnitude(s.film.force, max_abs);
+  KOKKOS_INLINE_FUNCTION static shear_type limit(const params_type&, state_type& s, double max_abs) {
+    const shear_type film = cap_magnitude(s.film.force, max_abs);
     s.film.force = film;
-    s.stone = clamp_magnitude(s.stone, max_abs - (film < 0.0 ? -film : film));
+    s.stone = cap_magnitude(s.stone, max_abs - magnitude(film));
     return film + s.stone;
+  }
+  template <class Turn>
+  KOKKOS_INLINE_FUNCTION static void turn(state_type& s, const Turn& turn) {
+    s.film.force = turn(s.film.force);
+    s.film.kelvin = turn(s.film.kelvin);
+    s.stone = turn(s.stone);
   }
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) {
     return p.film.maxwell_stiffness + p.stone_stiffness;
   }
 };
+using FilmShear = FilmShearIn<Dim2>;
 
 // The rutting test's mastic law: Burger's with a bond, and a film where the
 // table gives it stones.

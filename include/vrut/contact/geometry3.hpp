@@ -1,7 +1,7 @@
 #pragma once
-// What a contact law sees of a contact in 3D, and the contact frame's
-// bookkeeping: the same conventions as geometry.hpp, with the shear a vector
-// in the contact's tangent plane.
+// The kinematics of a 3D contact, and the contact frame's bookkeeping: the
+// conventions of geometry.hpp, with the shear a vector in the contact's
+// tangent plane.
 //   - The normal points from the first body to the second; a positive
 //     normal force pushes them apart.
 //   - The shear displacement and force are the second body's, relative to
@@ -13,19 +13,14 @@
 //     normal, as YADE's ScGeom and PFC do; a last projection into the plane
 //     (keeping the magnitude, as LAMMPS' gran/hooke/history does) takes out
 //     what rounding leaves.
+#include <vrut/contact/geometry.hpp>
 #include <vrut/data/vec3.hpp>
 
 #include <Kokkos_Core.hpp>
 
 namespace vrut {
 
-struct ContactGeometry3 {
-  Vec3 normal;                    // unit, first -> second body
-  double overlap = 0.0;           // > 0 when touching
-  double normal_increment = 0.0;  // change of overlap during the last step
-  Vec3 shear_increment;           // tangential slip of the second body relative to the first, last step
-  double dt = 0.0;
-};
+using ContactGeometry3 = ContactGeometryIn<Dim3>;
 
 // The kinematics of a contact: `normal` and `overlap` as above, each body's
 // branch vector (its centre to the contact point), velocity and angular
@@ -86,11 +81,15 @@ KOKKOS_INLINE_FUNCTION Vec3 turn_with_contact(Vec3 shear, Vec3 old_normal, Vec3 
   return after > 0.0 ? (before / after) * in_plane : in_plane;
 }
 
-// The Coulomb slider in 3D: a shear force longer than `limit` shortened to
-// it, its direction kept.
-KOKKOS_INLINE_FUNCTION Vec3 cap_magnitude(Vec3 f, double limit) {
-  const double length = norm(f);
-  return length > limit ? (limit / length) * f : f;
-}
+// turn_with_contact as a function of the shear vector alone, for one
+// contact and step: what a law's `turn` hook applies to each vector it keeps
+// (contact/concept.hpp, turn_history).
+struct ContactTurn {
+  Vec3 old_normal, new_normal;
+  double twist = 0.0;
+  KOKKOS_INLINE_FUNCTION Vec3 operator()(Vec3 shear) const {
+    return turn_with_contact(shear, old_normal, new_normal, twist);
+  }
+};
 
 }  // namespace vrut

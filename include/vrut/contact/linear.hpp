@@ -1,6 +1,7 @@
 #pragma once
 // Linear springs: the normal and shear slots of a composed law (see composite.hpp).
 #include <vrut/contact/geometry.hpp>
+#include <vrut/data/dimension.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -11,7 +12,8 @@ namespace vrut {
 struct LinearNormal {
   struct params_type { double stiffness = 0.0; };  // k_n, N/m
   struct state_type {};
-  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type&, const ContactGeometry& g) {
+  template <class Geometry>
+  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type&, const Geometry& g) {
     return p.stiffness * g.overlap;
   }
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) { return p.stiffness; }
@@ -29,7 +31,8 @@ struct DampedLinearNormal {
   };
   struct state_type {};
   static constexpr bool uses_mass = true;
-  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type&, const ContactGeometry& g) {
+  template <class Geometry>
+  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type&, const Geometry& g) {
     double f = p.stiffness * g.overlap;
     if (p.damping_ratio > 0.0) {
       const double m = g.mass_1 > 0.0 ? g.mass_1 * g.mass_2 / (g.mass_1 + g.mass_2) : g.mass_2;
@@ -40,19 +43,28 @@ struct DampedLinearNormal {
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) { return p.stiffness; }
 };
 
-// Incremental shear spring: dF_s = -k_s * (tangential slip during the step).
-struct LinearShear {
-  struct params_type { double stiffness = 0.0; };  // k_s, N/m
-  struct state_type { double force = 0.0; };
-  KOKKOS_INLINE_FUNCTION static double force(const params_type& p, state_type& s, const ContactGeometry& g) {
+// Incremental shear spring: dF_s = -k_s * (tangential slip during the step),
+// a scalar along the tangent in 2D, a vector in the tangent plane in 3D.
+struct LinearShearParams { double stiffness = 0.0; };  // k_s, N/m
+
+template <class D>
+struct LinearShearIn {
+  using dimension = D;
+  using params_type = LinearShearParams;
+  using shear_type = typename D::shear;
+  struct state_type { shear_type force{}; };
+  KOKKOS_INLINE_FUNCTION static shear_type force(const params_type& p, state_type& s, const ContactGeometryIn<D>& g) {
     s.force -= p.stiffness * g.shear_increment;
     return s.force;
   }
   // Coulomb cap: the stored force slides back to the limit, so unloading starts from there.
-  KOKKOS_INLINE_FUNCTION static double limit(const params_type&, state_type& s, double max_abs) {
-    return s.force = clamp_magnitude(s.force, max_abs);
+  KOKKOS_INLINE_FUNCTION static shear_type limit(const params_type&, state_type& s, double max_abs) {
+    return s.force = cap_magnitude(s.force, max_abs);
   }
+  template <class Turn>
+  KOKKOS_INLINE_FUNCTION static void turn(state_type& s, const Turn& turn) { s.force = turn(s.force); }
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) { return p.stiffness; }
 };
+using LinearShear = LinearShearIn<Dim2>;
 
 }  // namespace vrut

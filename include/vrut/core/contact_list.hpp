@@ -1,13 +1,20 @@
 #pragma once
-// Disk-disk contact list: for each disk i the partners j > i within
-// r_i + r_j + skin, found with a cell list (O(N)), plus the per-contact law
+// Particle-particle contact list: for each disk (2D) or sphere (3D) i the
+// partners j > i within r_i + r_j + skin, found with a cell list (O(N)) and
+// the 9- or 27-cell stencil, plus the per-contact law
 // state, which survives rebuilds (matched by partner), and a reverse list so
 // every disk can sum its contact forces without atomics, in a fixed order.
 // That fixed order makes runs bitwise identical across backends and thread counts.
 // The disks of an ensemble's specimens share the grid's geometry, but each
 // specimen has its own layer of cells, so pairs never cross specimens.
+// In 3D an axis of the box (neighbor/periodic_box3.hpp) may be periodic:
+// its cells wrap around, and pairs are seen through the face by the nearest
+// image. Positions are not wrapped: a particle keeps its continuous path,
+// and only its cell is taken modulo the box.
 #include <vrut/contact/concept.hpp>
+#include <vrut/data/dimension.hpp>
 #include <vrut/data/particles.hpp>
+#include <vrut/neighbor/periodic_box3.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -18,26 +25,33 @@
 
 namespace vrut {
 
-// Force of one contact on its second disk, and the moments on both.
-struct ContactLoad {
-  Vec2 force;
-  double moment_first = 0.0, moment_second = 0.0;
+// Force of one contact on its second particle, and the moments on both.
+template <class D>
+struct ContactLoadIn {
+  typename D::vector force;
+  typename D::spin moment_first{}, moment_second{};
 };
+using ContactLoad = ContactLoadIn<Dim2>;
 
-template <class Law, class ExecutionSpace>
+template <class Law, class ExecutionSpace, class D = Dim2>
 class ContactList {
  public:
   using execution_space = ExecutionSpace;
   using memory_space = typename ExecutionSpace::memory_space;
   using state_type = typename Law::state_type;
+  using vector = typename D::vector;
+  using particles_type = Particles<memory_space, D>;
+  using box_type = PeriodicBox<D>;
+  static constexpr int dims = D::value;
 
   Kokkos::View<int**, memory_space> partner;  // (disk, slot) -> partner j > disk
   Kokkos::View<int*, memory_space> count;
   Kokkos::View<state_type**, memory_space> state;
-  Kokkos::View<ContactLoad**, memory_space> load;
+  Kokkos::View<ContactLoadIn<D>**, memory_space> load;
   Kokkos::View<int**, memory_space> reverse;  // (disk, slot) -> contact id i*capacity+k with disk as j
   Kokkos::View<int*, memory_space> reverse_count;
-  Kokkos::View<Vec2*, memory_space> position_at_build;
+  Kokkos::View<vector*, memory_space> position_at_build;
+  box_type box;  // the periodic axes (3D); set before the first build
   int capacity = 0, reverse_capacity = 0;
   int most_partners = 0, most_reverse = 0;  // the longest rows at the last build
   int specimens = 1;  // layers of cells, one per specimen (Particles::specimen)
@@ -45,7 +59,7 @@ class ContactList {
 
   // Rebuilds from the current positions. Pairs that are bonded in the old
   // list are kept whatever their distance, with their state.
-  void rebuild(const execution_space& space, const Particles<memory_space>& ps, double skin) {
+  void rebuild(const execution_space& space, const particles_type& ps, double skin) {
     const int n = static_cast<int>(ps.size());
     // Rows as long as the last build's longest plus one: the rows are
     // contiguous, so slack in them is memory traffic on every step (a 64k-disk
@@ -69,7 +83,7 @@ class ContactList {
       if (most_reverse <= reverse_capacity && reverse_capacity <= most_reverse + 1) break;
       reverse_capacity = most_reverse + 1;
     }
-    position_at_build = Kokkos::View<Vec2*, memory_space>("position_at_build", n);
+    position_at_build = Kokkos::View<vector*, memory_space>("position_at_build", n);
     Kokkos::deep_copy(space, position_at_build, ps.position);
     ++builds;
   }
@@ -77,7 +91,7 @@ class ContactList {
   // Largest displacement since the last build; a rebuild is due past skin / 2.
   // A position that is not finite counts as a displacement of 1e300 m, so
   // this check, made every step anyway, also finds a run that has blown up.
-  double max_displacement(const execution_space& space, const Particles<memory_space>& ps) const {
+  double max_displacement(const execution_space& space, const particles_type& ps) const {
     auto x = ps.position;
     auto x0 = position_at_build;
     double m = 0.0;
@@ -94,37 +108,57 @@ class ContactList {
 
   // Cells, public only because device lambdas cannot live in private members.
   Kokkos::View<int*, memory_space> cell_of, cell_start, cell_particles;
-  int cells_x = 0, cells_y = 0;  // per specimen layer
-  double cell_size = 0.0, origin_x = 0.0, origin_y = 0.0;
+  int cells[3] = {1, 1, 1};  // per axis, per specimen layer (the third is 1 in 2D)
+  double cell_width[3] = {0.0, 0.0, 0.0}, origin[3] = {0.0, 0.0, 0.0};
 
-  void build_cells(const execution_space& space, const Particles<memory_space>& ps, double skin) {
+  void build_cells(const execution_space& space, const particles_type& ps, double skin) {
     const int n = static_cast<int>(ps.size());
     auto x = ps.position;
     auto r = ps.radius;
     auto specimen = ps.specimen;
-    double xmin, ymin, xmax, ymax, rmax;
-    Kokkos::parallel_reduce("vrut::bounds_xmin", Kokkos::RangePolicy<execution_space>(space, 0, n),
-        KOKKOS_LAMBDA(const int i, double& a) { if (x(i).x < a) a = x(i).x; }, Kokkos::Min<double>(xmin));
-    Kokkos::parallel_reduce("vrut::bounds_ymin", Kokkos::RangePolicy<execution_space>(space, 0, n),
-        KOKKOS_LAMBDA(const int i, double& a) { if (x(i).y < a) a = x(i).y; }, Kokkos::Min<double>(ymin));
-    Kokkos::parallel_reduce("vrut::bounds_xmax", Kokkos::RangePolicy<execution_space>(space, 0, n),
-        KOKKOS_LAMBDA(const int i, double& a) { if (x(i).x > a) a = x(i).x; }, Kokkos::Max<double>(xmax));
-    Kokkos::parallel_reduce("vrut::bounds_ymax", Kokkos::RangePolicy<execution_space>(space, 0, n),
-        KOKKOS_LAMBDA(const int i, double& a) { if (x(i).y > a) a = x(i).y; }, Kokkos::Max<double>(ymax));
+    double low[3] = {0.0, 0.0, 0.0}, high[3] = {0.0, 0.0, 0.0}, rmax = 0.0;
+    for (int k = 0; k < dims; ++k) {
+      Kokkos::parallel_reduce("vrut::bounds_min", Kokkos::RangePolicy<execution_space>(space, 0, n),
+          KOKKOS_LAMBDA(const int i, double& a) { if (component(x(i), k) < a) a = component(x(i), k); },
+          Kokkos::Min<double>(low[k]));
+      Kokkos::parallel_reduce("vrut::bounds_max", Kokkos::RangePolicy<execution_space>(space, 0, n),
+          KOKKOS_LAMBDA(const int i, double& a) { if (component(x(i), k) > a) a = component(x(i), k); },
+          Kokkos::Max<double>(high[k]));
+      if (!std::isfinite(low[k] + high[k]))
+        throw std::runtime_error("vrut: a particle position is not finite (time step too large?)");
+    }
     Kokkos::parallel_reduce("vrut::bounds_rmax", Kokkos::RangePolicy<execution_space>(space, 0, n),
         KOKKOS_LAMBDA(const int i, double& a) { if (r(i) > a) a = r(i); }, Kokkos::Max<double>(rmax));
-    if (!std::isfinite(xmin + ymin + xmax + ymax))
-      throw std::runtime_error("vrut: a disk position is not finite (time step too large?)");
-    double size = 2.0 * rmax + skin;
-    // Keep the grid at most ~4 cells per disk, whatever the spread.
+    const double reach = 2.0 * rmax + skin;
+    // Along a periodic axis the cells tile the box; along the others they
+    // span the particles.
+    auto span = [&](int k) { return box.periodic[k] ? box.length(k) : high[k] - low[k]; };
+    auto count_along = [&](int k, double size) {
+      return box.periodic[k] ? static_cast<int>(span(k) / size) : static_cast<int>(span(k) / size) + 1;
+    };
+    double size = reach;
+    // Keep the grid at most ~4 cells per particle, whatever the spread.
     const double per_layer = static_cast<double>(n) / (specimens > 0 ? specimens : 1);
-    while (((xmax - xmin) / size + 1.0) * ((ymax - ymin) / size + 1.0) > 4.0 * per_layer + 16.0) size *= 2.0;
-    cell_size = size;
-    origin_x = xmin;
-    origin_y = ymin;
-    cells_x = static_cast<int>((xmax - xmin) / size) + 1;
-    cells_y = static_cast<int>((ymax - ymin) / size) + 1;
-    const int ncells = cells_x * cells_y * (specimens > 0 ? specimens : 1);
+    for (;;) {
+      double total = 1.0;
+      bool periodic_would_fall_short = false;  // below 3 cells, had the cells doubled
+      for (int k = 0; k < dims; ++k) {
+        total *= box.periodic[k] ? span(k) / size : span(k) / size + 1.0;
+        periodic_would_fall_short = periodic_would_fall_short || (box.periodic[k] && count_along(k, 2.0 * size) < 3);
+      }
+      if (total <= 4.0 * per_layer + 16.0 || periodic_would_fall_short) break;
+      size *= 2.0;
+    }
+    for (int k = 0; k < dims; ++k) {
+      cells[k] = count_along(k, size);
+      if (box.periodic[k] && cells[k] < 3)
+        throw std::invalid_argument("vrut: a periodic axis must be at least 3 contact reaches long (" +
+                                    std::to_string(3.0 * reach) + " m here; the box has " +
+                                    std::to_string(span(k)) + " m)");
+      cell_width[k] = box.periodic[k] ? span(k) / cells[k] : size;
+      origin[k] = box.periodic[k] ? component(box.low, k) : low[k];
+    }
+    const int ncells = cells[0] * cells[1] * cells[2] * (specimens > 0 ? specimens : 1);
 
     cell_of = Kokkos::View<int*, memory_space>("cell_of", n);
     cell_start = Kokkos::View<int*, memory_space>("cell_start", ncells + 1);
@@ -133,14 +167,16 @@ class ContactList {
     auto cof = cell_of;
     auto start = cell_start;
     auto members = cell_particles;
-    const int cx = cells_x, cy = cells_y;
-    const double ox = origin_x, oy = origin_y;
+    const int cx = cells[0], cy = cells[1], cz = cells[2];
+    const double ox = origin[0], oy = origin[1], oz = origin[2];
+    const double wx = cell_width[0], wy = cell_width[1], wz = cell_width[2];
+    const bool px = box.periodic[0], py = box.periodic[1], pz = dims == 3 && box.periodic[dims - 1];
     Kokkos::parallel_for("vrut::cell_count", Kokkos::RangePolicy<execution_space>(space, 0, n),
         KOKKOS_LAMBDA(const int i) {
-          int ix = static_cast<int>((x(i).x - ox) / size), iy = static_cast<int>((x(i).y - oy) / size);
-          ix = ix < 0 ? 0 : (ix >= cx ? cx - 1 : ix);
-          iy = iy < 0 ? 0 : (iy >= cy ? cy - 1 : iy);
-          cof(i) = (specimen(i) * cy + iy) * cx + ix;
+          const int ix = cell_index(component(x(i), 0), ox, wx, cx, px);
+          const int iy = cell_index(component(x(i), 1), oy, wy, cy, py);
+          const int iz = dims == 3 ? cell_index(component(x(i), dims - 1), oz, wz, cz, pz) : 0;
+          cof(i) = ((specimen(i) * cz + iz) * cy + iy) * cx + ix;
           Kokkos::atomic_add(&start(cof(i) + 1), 1);  // atomic_increment is deprecated in Kokkos 4
         });
     Kokkos::parallel_scan("vrut::cell_scan", Kokkos::RangePolicy<execution_space>(space, 1, ncells + 1),
@@ -155,8 +191,19 @@ class ContactList {
         });
   }
 
+  // The cell of coordinate c along an axis: wrapped around a periodic one,
+  // clamped to the grid along the others.
+  KOKKOS_INLINE_FUNCTION static int cell_index(double c, double origin, double width, int cells, bool periodic) {
+    if (periodic) {
+      int k = static_cast<int>(floor((c - origin) / width)) % cells;
+      return k < 0 ? k + cells : k;
+    }
+    const int k = static_cast<int>((c - origin) / width);
+    return k < 0 ? 0 : (k >= cells ? cells - 1 : k);
+  }
+
   // Fills a new partner list; returns the largest count (> capacity: redo larger).
-  int fill(const execution_space& space, const Particles<memory_space>& ps, double skin) {
+  int fill(const execution_space& space, const particles_type& ps, double skin) {
     const int n = static_cast<int>(ps.size());
     const int cap = capacity;
     Kokkos::View<int**, memory_space> new_partner("partner", n, cap);
@@ -171,28 +218,36 @@ class ContactList {
     auto cof = cell_of;
     auto start = cell_start;
     auto members = cell_particles;
-    const int cx = cells_x, cy = cells_y;
+    const int cx = cells[0], cy = cells[1], cz = cells[2];
+    const bool px = box.periodic[0], py = box.periodic[1], pz = dims == 3 && box.periodic[dims - 1];
+    const box_type space_box = box;
     int needed = 0;
     Kokkos::parallel_reduce("vrut::contact_fill", Kokkos::RangePolicy<execution_space>(space, 0, n),
         KOKKOS_LAMBDA(const int i, int& most) {
           int k = 0;
-          const int ix = cof(i) % cx, iy = (cof(i) / cx) % cy, layer = cof(i) / (cx * cy);
-          for (int dy = -1; dy <= 1; ++dy) {
-            const int yy = iy + dy;
-            if (yy < 0 || yy >= cy) continue;
-            for (int dx = -1; dx <= 1; ++dx) {
-              const int xx = ix + dx;
-              if (xx < 0 || xx >= cx) continue;
-              const int c = (layer * cy + yy) * cx + xx;
-              for (int m = start(c); m < start(c + 1); ++m) {
-                const int j = members(m);
-                if (j <= i) continue;
-                if (body(i) >= 0 && body(j) == body(i)) continue;  // two members of one rigid body never touch
-                const double reach = r(i) + r(j) + skin;
-                const Vec2 d = x(j) - x(i);
-                if (dot(d, d) < reach * reach) {
-                  if (k < cap) new_partner(i, k) = j;
-                  ++k;
+          const int ix = cof(i) % cx, iy = (cof(i) / cx) % cy, iz = (cof(i) / (cx * cy)) % cz;
+          const int layer = cof(i) / (cx * cy * cz);
+          const int reach_z = dims == 3 ? 1 : 0;
+          for (int dz = -reach_z; dz <= reach_z; ++dz) {
+            const int zz = wrap_or_skip(iz + dz, cz, pz);
+            if (zz < 0) continue;
+            for (int dy = -1; dy <= 1; ++dy) {
+              const int yy = wrap_or_skip(iy + dy, cy, py);
+              if (yy < 0) continue;
+              for (int dx = -1; dx <= 1; ++dx) {
+                const int xx = wrap_or_skip(ix + dx, cx, px);
+                if (xx < 0) continue;
+                const int c = ((layer * cz + zz) * cy + yy) * cx + xx;
+                for (int m = start(c); m < start(c + 1); ++m) {
+                  const int j = members(m);
+                  if (j <= i) continue;
+                  if (body(i) >= 0 && body(j) == body(i)) continue;  // two members of one rigid body never touch
+                  const double reach = r(i) + r(j) + skin;
+                  const vector d = space_box.separation(x(i), x(j));
+                  if (dot(d, d) < reach * reach) {
+                    if (k < cap) new_partner(i, k) = j;
+                    ++k;
+                  }
                 }
               }
             }
@@ -234,8 +289,15 @@ class ContactList {
     partner = new_partner;
     count = new_count;
     state = new_state;
-    load = Kokkos::View<ContactLoad**, memory_space>("contact_load", n, cap);
+    load = Kokkos::View<ContactLoadIn<D>**, memory_space>("contact_load", n, cap);
     return needed;
+  }
+
+  // A neighbour cell's index along an axis: wrapped on a periodic one, -1
+  // past the grid's edge on the others.
+  KOKKOS_INLINE_FUNCTION static int wrap_or_skip(int k, int cells, bool periodic) {
+    if (periodic) return k < 0 ? k + cells : (k >= cells ? k - cells : k);
+    return k < 0 || k >= cells ? -1 : k;
   }
 
   int fill_reverse(const execution_space& space, int n) {

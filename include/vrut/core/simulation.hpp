@@ -1,11 +1,22 @@
 #pragma once
-// The DEM engine: disks, walls, contacts and one time step, all templated.
+// The DEM engine: particles, walls, contacts and one time step, all
+// templated, one source for 2D and 3D.
 //
-//   Law          contact law between disks (contact/concept.hpp)
+//   Law          contact law between particles (contact/concept.hpp)
 //   Space        Kokkos execution space the kernels run in
 //   Integrator   time integration policy (integrate/central_difference.hpp)
 //   Controller   wall controller policy (servo/servo.hpp)
-//   WallLaw      contact law between disks and walls
+//   WallLaw      contact law between particles and walls
+//   Dim          Dim2 (disks of thickness t, segment walls) or Dim3 (spheres,
+//                rectangular plates, periodic axes); data/dimension.hpp.
+//                The laws are given in their 2D names; the engine takes
+//                their form in Dim (in_dimension, contact/concept.hpp).
+//
+// In 3D a contact's stored shear turns with it (contact/geometry3.hpp): over
+// a step the normal turns from the one the pair had a step ago, which the
+// leapfrog gives exactly, d(t - dt) = d(t) - dt (v_j - v_i), and the pair
+// spins about the mean of the two normals by dt times its mean angular
+// velocity there.
 //
 // One step (PFC's cycle): contact forces from the positions at t and the
 // velocities at t - dt/2; per disk, the forces summed in a fixed order and
@@ -24,13 +35,18 @@
 // each specimen follows exactly the trajectory of its own single run.
 #include <vrut/contact/composite.hpp>
 #include <vrut/contact/concept.hpp>
+#include <vrut/contact/geometry3.hpp>
 #include <vrut/core/assignment.hpp>
 #include <vrut/core/contact_list.hpp>
 #include <vrut/data/bodies.hpp>
+#include <vrut/data/dimension.hpp>
 #include <vrut/data/particle_set.hpp>
 #include <vrut/data/particles.hpp>
 #include <vrut/data/walls.hpp>
+#include <vrut/data/walls3.hpp>
+#include <vrut/geometry/clump3.hpp>
 #include <vrut/integrate/central_difference.hpp>
+#include <vrut/neighbor/periodic_box3.hpp>
 #include <vrut/servo/servo.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -40,6 +56,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -56,21 +73,41 @@ class SimulationUnstable : public std::runtime_error {
   long step_;
 };
 
-struct SimulationSettings {
-  double thickness = 1.0;  // out-of-plane disk width t, m: mass = rho pi r^2 t
-  Vec2 gravity;            // m/s^2
-  double skin = -1.0;      // neighbour-list margin, m; < 0: 0.2 * the largest radius
+template <class D>
+struct SimulationSettingsIn {
+  double thickness = 1.0;     // 2D: out-of-plane disk width t, m: mass = rho pi r^2 t (3D: rho 4/3 pi r^3)
+  typename D::vector gravity;  // m/s^2
+  double skin = -1.0;         // neighbour-list margin, m; < 0: 0.2 * the largest radius
+  // 3D: the box, and which of its axes are periodic (none by default).
+  PeriodicBox<D> box;
 };
+using SimulationSettings = SimulationSettingsIn<Dim2>;
 
-template <class Law, class Space = Kokkos::DefaultExecutionSpace, class Integrator = CentralDifference,
-          class Controller = ServoControl, class WallLaw = Linear>
+template <class LawSpec, class Space = Kokkos::DefaultExecutionSpace, class Integrator = CentralDifference,
+          class Controller = ServoControl, class WallLawSpec = Linear, class Dim = Dim2>
 class Simulation {
+ public:
+  using dimension = Dim;
+  // The laws' forms in this dimension (the same types in 2D).
+  using Law = in_dimension_t<LawSpec, Dim>;
+  using WallLaw = in_dimension_t<WallLawSpec, Dim>;
   static_assert(check_contact_law<Law>(), "vrut::Simulation: Law is not a contact law (see above)");
   static_assert(check_contact_law<WallLaw>(), "vrut::Simulation: WallLaw is not a contact law (see above)");
+  static_assert(std::is_same_v<law_dimension_t<Law>, Dim> && std::is_same_v<law_dimension_t<WallLaw>, Dim>,
+                "vrut::Simulation: a law has no form in this dimension: a 3D law declares `using dimension = "
+                "Dim3;`, or is composed of slots that are templates on their dimension (LinearShearIn<D>)");
+  static_assert(std::is_same_v<typename Law::params_type, typename LawSpec::params_type>,
+                "vrut::Simulation: a law's 3D form must take its 2D form's parameters");
 
- public:
   using execution_space = Space;
   using memory_space = typename Space::memory_space;
+  using vector = typename Dim::vector;
+  using spin = typename Dim::spin;
+  using wall_type = std::conditional_t<is_3d<Dim>, Wall3, Wall>;
+  using wall_load_type = WallLoadIn<Dim>;
+  using settings_type = SimulationSettingsIn<Dim>;
+  using particles_type = Particles<typename Space::memory_space, Dim>;
+  using bodies_type = Bodies<typename Space::memory_space, Dim>;
   using law_type = Law;
   using params_type = typename Law::params_type;
   using wall_params_type = typename WallLaw::params_type;
@@ -81,12 +118,15 @@ class Simulation {
   using WallMask = unsigned long long;
   static constexpr int max_walls_per_specimen = 64;
 
-  Simulation(const ParticleSet& set, const AssignmentTable<Law>& table, const SimulationSettings& settings = {},
+  Simulation(const ParticleSet& set, const AssignmentTable<LawSpec>& table, const settings_type& settings = {},
              const integrator_params& integrator = {}, const execution_space& space = execution_space())
       : space_(space), settings_(settings), integrator_(integrator), particles_(set.size()),
         law_params_("law_params", table.groups(), table.groups()), max_law_stiffness_(table.max_stiffness()) {
-    if (set.size() == 0) throw std::invalid_argument("vrut::Simulation: no disks");
-    if (!(settings.thickness > 0.0)) throw std::invalid_argument("vrut::Simulation: thickness must be positive");
+    if (set.size() == 0) throw std::invalid_argument("vrut::Simulation: no particles");
+    if (!is_3d<Dim> && !(settings.thickness > 0.0))
+      throw std::invalid_argument("vrut::Simulation: thickness must be positive");
+    if (is_3d<Dim> && set.z.size() != set.size())
+      throw std::invalid_argument("vrut::Simulation: a 3D simulation needs a z for every particle (ParticleSet::z)");
     const int n = static_cast<int>(set.size());
     auto h = Kokkos::create_mirror_view(particles_.position);
     auto hr = Kokkos::create_mirror_view(particles_.radius);
@@ -105,10 +145,16 @@ class Simulation {
         throw std::invalid_argument("vrut::Simulation: disk " + std::to_string(i) + " has group " +
                                     std::to_string(set.group[i]) + " but the table has " +
                                     std::to_string(table.groups()) + " groups");
-      h(i) = {set.x[i], set.y[i]};
+      if constexpr (is_3d<Dim>) {
+        h(i) = {set.x[i], set.y[i], set.z[i]};
+        hm(i) = set.density[i] * (4.0 / 3.0 * 3.14159265358979323846) * set.radius[i] * set.radius[i] * set.radius[i];
+        hi(i) = 0.4 * hm(i) * set.radius[i] * set.radius[i];
+      } else {
+        h(i) = {set.x[i], set.y[i]};
+        hm(i) = set.density[i] * 3.14159265358979323846 * set.radius[i] * set.radius[i] * settings.thickness;
+        hi(i) = 0.5 * hm(i) * set.radius[i] * set.radius[i];
+      }
       hr(i) = set.radius[i];
-      hm(i) = set.density[i] * 3.14159265358979323846 * set.radius[i] * set.radius[i] * settings.thickness;
-      hi(i) = 0.5 * hm(i) * set.radius[i] * set.radius[i];
       hg(i) = set.group[i];
       hs(i) = set.specimen.empty() ? 0 : set.specimen[i];
       const int previous = i == 0 ? 0 : hs(i - 1);
@@ -138,6 +184,7 @@ class Simulation {
       Kokkos::deep_copy(specimen_begin_, hb);
     }
     contacts_.specimens = specimens();
+    contacts_.box = settings_.box;
     if (settings_.skin < 0.0) settings_.skin = 0.2 * rmax;
     largest_diameter_ = 2.0 * rmax;
 
@@ -155,9 +202,15 @@ class Simulation {
 
   // --- set-up ---------------------------------------------------------------
   // Adds a wall that touches the disks of one specimen (0 in a single run).
-  int add_wall(const Wall& wall, const wall_params_type& params, const controller_params& control = {},
+  int add_wall(const wall_type& wall, const wall_params_type& params, const controller_params& control = {},
                int specimen = 0) {
-    if (!(length(wall) > 0.0)) throw std::invalid_argument("vrut::Simulation: a wall needs two distinct ends");
+    if constexpr (is_3d<Dim>) {
+      const double u = norm(wall.half_u), v = norm(wall.half_v);
+      if (!(area(wall) > 0.0) || !(std::abs(dot(wall.half_u, wall.half_v)) <= 1e-12 * u * v))
+        throw std::invalid_argument("vrut::Simulation: a plate needs two orthogonal half-edges of nonzero length");
+    } else if (!(length(wall) > 0.0)) {
+      throw std::invalid_argument("vrut::Simulation: a wall needs two distinct ends");
+    }
     if (specimen < 0 || specimen >= specimens())
       throw std::invalid_argument("vrut::Simulation: wall for specimen " + std::to_string(specimen) + ", but there are " +
                                   std::to_string(specimens()));
@@ -180,7 +233,7 @@ class Simulation {
     control_host_.at(w) = control;
     push_walls();
   }
-  void set_wall_velocity(int w, Vec2 v) {
+  void set_wall_velocity(int w, vector v) {
     pull_walls();
     walls_host_.at(w).velocity = v;
     push_walls();
@@ -195,12 +248,13 @@ class Simulation {
     auto partner = contacts_.partner;
     auto count = contacts_.count;
     auto state = contacts_.state;
+    const auto box = settings_.box;
     int bonded = 0;
     Kokkos::parallel_reduce("vrut::bond", Kokkos::RangePolicy<execution_space>(space_, 0, ps.size()),
         KOKKOS_LAMBDA(const int i, int& sum) {
           for (int k = 0; k < count(i); ++k) {
             const int j = partner(i, k);
-            const double gap = norm(ps.position(j) - ps.position(i)) - ps.radius(i) - ps.radius(j);
+            const double gap = norm(box.separation(ps.position(i), ps.position(j))) - ps.radius(i) - ps.radius(j);
             if (gap <= tolerance) {
               make_bonded<Law>(state(i, k));
               if (is_bonded<Law>(state(i, k))) ++sum;
@@ -284,19 +338,29 @@ class Simulation {
 
   // --- rigid bodies ---------------------------------------------------------
   int body_count() const { return static_cast<int>(bodies_.size()); }
-  Bodies<memory_space>& bodies() { return bodies_; }
-  const Bodies<memory_space>& bodies() const { return bodies_; }
-  // Sets body b's velocity and angular velocity, and its members' with it.
-  void set_body_motion(int b, Vec2 velocity, double angular_velocity) {
+  bodies_type& bodies() { return bodies_; }
+  const bodies_type& bodies() const { return bodies_; }
+  // Sets body b's velocity and angular velocity, and its members' with it
+  // (in 3D the angular momentum that gives that angular velocity).
+  void set_body_motion(int b, vector velocity, spin angular_velocity) {
     if (b < 0 || b >= body_count()) throw std::invalid_argument("vrut::Simulation: no body " + std::to_string(b));
     auto v = Kokkos::subview(bodies_.velocity, b);
     auto w = Kokkos::subview(bodies_.angular_velocity, b);
     Kokkos::deep_copy(v, velocity);
     Kokkos::deep_copy(w, angular_velocity);
+    if constexpr (is_3d<Dim>) {
+      Quaternion q;
+      Vec3 inertia;
+      Kokkos::deep_copy(q, Kokkos::subview(bodies_.rotation, b));
+      Kokkos::deep_copy(inertia, Kokkos::subview(bodies_.inertia, b));
+      // L = q I (q* w q) q*: the world-frame angular momentum.
+      const Vec3 momentum = rotate(q, times_each(inertia, rotate_back(q, angular_velocity)));
+      Kokkos::deep_copy(Kokkos::subview(bodies_.angular_momentum, b), momentum);
+    }
     place_members();
   }
   // Puts every member where its body says, with the body's motion at that
-  // point: x = X + R(theta) offset, v = V + omega perp(R offset).
+  // point: x = X + R offset, v = V + omega x (R offset).
   void place_members() {
     if (bodies_.size() == 0) return;
     auto ps = particles_;
@@ -304,17 +368,24 @@ class Simulation {
     Kokkos::parallel_for("vrut::place_members", Kokkos::RangePolicy<execution_space>(space_, 0, bs.size()),
         KOKKOS_LAMBDA(const int b) { place_members_of(ps, bs, b); });
   }
-  KOKKOS_INLINE_FUNCTION static void place_members_of(const Particles<memory_space>& ps, const Bodies<memory_space>& bs,
-                                                      int b) {
-    const Vec2 X = bs.position(b), V = bs.velocity(b);
-    const double theta = bs.rotation(b), w = bs.angular_velocity(b);
+  KOKKOS_INLINE_FUNCTION static void place_members_of(const particles_type& ps, const bodies_type& bs, int b) {
+    const vector X = bs.position(b), V = bs.velocity(b);
+    const typename Dim::orientation theta = bs.rotation(b);
+    const spin w = bs.angular_velocity(b);
     for (int k = bs.member_begin(b); k < bs.member_begin(b + 1); ++k) {
       const int i = bs.member(k);
-      const Vec2 off = rotated(bs.offset(k), theta);
-      const Vec2 x = X + off;
+      vector off, turning;  // the offset in the world frame, and the body's velocity there less V
+      if constexpr (is_3d<Dim>) {
+        off = rotate(theta, bs.offset(k));
+        turning = cross(w, off);
+      } else {
+        off = rotated(bs.offset(k), theta);
+        turning = w * perp(off);
+      }
+      const vector x = X + off;
       ps.displacement(i) += x - ps.position(i);
       ps.position(i) = x;
-      ps.velocity(i) = V + w * perp(off);
+      ps.velocity(i) = V + turning;
       ps.angular_velocity(i) = w;
       ps.rotation(i) = theta;
     }
@@ -351,11 +422,18 @@ class Simulation {
       if (!(norm(x(i) - x0(i)) <= limit)) bad = i, ++count;
     const double critical = critical_timestep();
     char text[512];
+    char where[96];
+    if constexpr (is_3d<Dim>)
+      std::snprintf(where, sizeof where, "sphere %zu (specimen %d), now at (%.4g, %.4g, %.4g) m", bad, s(bad),
+                    x(bad).x, x(bad).y, x(bad).z);
+    else
+      std::snprintf(where, sizeof where, "disk %zu (specimen %d), now at (%.4g, %.4g) m", bad, s(bad), x(bad).x,
+                    x(bad).y);
     std::snprintf(text, sizeof text,
-                  "vrut: the simulation became unstable at step %ld (t = %.4g s): disk %zu (specimen %d), now at "
-                  "(%.4g, %.4g) m, and %zu more jumped more than a diameter in one step or are not finite. The time "
-                  "step %.4g s is %.3g of sqrt(m_min / k_max) = %.4g s; dense packings need 0.1 to 0.3 of it.",
-                  steps_, time_, bad, s(bad), x(bad).x, x(bad).y, count - 1, dt, dt / critical, critical);
+                  "vrut: the simulation became unstable at step %ld (t = %.4g s): %s, and %zu more jumped more than "
+                  "a diameter in one step or are not finite. The time step %.4g s is %.3g of sqrt(m_min / k_max) = "
+                  "%.4g s; dense packings need 0.1 to 0.3 of it.",
+                  steps_, time_, where, count - 1, dt, dt / critical, critical);
     throw SimulationUnstable(text, steps_);
   }
 
@@ -377,34 +455,34 @@ class Simulation {
   }
 
   // --- reading --------------------------------------------------------------
-  Particles<memory_space>& particles() { return particles_; }
-  const Particles<memory_space>& particles() const { return particles_; }
-  const ContactList<Law, execution_space>& contacts() const { return contacts_; }
+  particles_type& particles() { return particles_; }
+  const particles_type& particles() const { return particles_; }
+  const ContactList<Law, execution_space, Dim>& contacts() const { return contacts_; }
   double time() const { return time_; }
   long steps() const { return steps_; }
-  const SimulationSettings& settings() const { return settings_; }
+  const settings_type& settings() const { return settings_; }
   const execution_space& space() const { return space_; }
 
-  Wall wall(int w) {
+  wall_type wall(int w) {
     pull_walls();
     return walls_host_.at(w);
   }
   // Every wall where it is now, in one copy from the device.
-  const std::vector<Wall>& all_walls() {
+  const std::vector<wall_type>& all_walls() {
     pull_walls();
     return walls_host_;
   }
-  std::vector<Vec2> all_wall_impulses() const {
+  std::vector<vector> all_wall_impulses() const {
     auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), wall_impulse_);
-    return std::vector<Vec2>(h.data(), h.data() + h.extent(0));
+    return std::vector<vector>(h.data(), h.data() + h.extent(0));
   }
-  WallLoad wall_load(int w) const {
+  wall_load_type wall_load(int w) const {
     auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), wall_total_);
     return h(w);
   }
   // Time integral of the load on wall w since it was added (N s): the mean
   // load over an interval is the difference of two readings over its length.
-  Vec2 wall_impulse(int w) const {
+  vector wall_impulse(int w) const {
     auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), wall_impulse_);
     return h(w);
   }
@@ -442,6 +520,7 @@ class Simulation {
       a.view("body_rotation", bodies_.rotation);
       a.view("body_angular_velocity", bodies_.angular_velocity);
       a.view("body_moment", bodies_.moment);
+      if constexpr (is_3d<Dim>) a.view("body_angular_momentum", bodies_.angular_momentum);
     }
     a.view("contact_partner", contacts_.partner);
     a.view("contact_count", contacts_.count);
@@ -480,42 +559,100 @@ class Simulation {
     auto state = contacts_.state;
     auto load = contacts_.load;
     auto params = law_params_;
+    const auto box = settings_.box;
     Kokkos::parallel_for("vrut::contact_forces", Kokkos::RangePolicy<execution_space>(space_, 0, ps.size()),
         KOKKOS_LAMBDA(const int i) {
           for (int k = 0; k < count(i); ++k) {
             const int j = partner(i, k);
-            const Vec2 d = ps.position(j) - ps.position(i);
+            const vector d = box.separation(ps.position(i), ps.position(j));
             const double dist = norm(d);
-            ContactGeometry g;
+            ContactGeometryIn<Dim> g;
             g.normal = (1.0 / dist) * d;
             g.overlap = ps.radius(i) + ps.radius(j) - dist;
             if (g.overlap <= 0.0 && !is_bonded<Law>(state(i, k))) {
               state(i, k) = typename Law::state_type{};
-              load(i, k) = ContactLoad{};
+              load(i, k) = ContactLoadIn<Dim>{};
               continue;
             }
-            const Vec2 t = perp(g.normal);
-            // Lever arms to the contact point, the middle of the overlap.
-            const double arm_i = ps.radius(i) - 0.5 * g.overlap, arm_j = ps.radius(j) - 0.5 * g.overlap;
-            const Vec2 v_rel = (ps.velocity(j) - (ps.angular_velocity(j) * arm_j) * t) -
-                               (ps.velocity(i) + (ps.angular_velocity(i) * arm_i) * t);
-            g.normal_increment = -dot(v_rel, g.normal) * dt;
-            g.shear_increment = dot(v_rel, t) * dt;
-            g.dt = dt;
-            g.radius_1 = ps.radius(i);
-            g.radius_2 = ps.radius(j);
-            if constexpr (law_uses_mass<Law>()) {
-              g.mass_1 = ps.contact_mass(i);
-              g.mass_2 = ps.contact_mass(j);
-            }
-            const ContactForce f = Law::force(params(ps.group(i), ps.group(j)), state(i, k), g);
-            ContactLoad l;
-            l.force = f.normal * g.normal + f.shear * t;
-            l.moment_first = -arm_i * f.shear;
-            l.moment_second = -arm_j * f.shear;
-            load(i, k) = l;
+            load(i, k) = particle_contact(params(ps.group(i), ps.group(j)), state(i, k), g, d, ps, i, j, dt);
           }
         });
+  }
+
+  // The contact of particles i and j, d their separation, g's normal and
+  // overlap set. (The dimension is chosen here, not in the kernel: nvcc
+  // refuses a lambda that first captures a variable inside `if constexpr`.)
+  KOKKOS_INLINE_FUNCTION static ContactLoadIn<Dim> particle_contact(const params_type& p, typename Law::state_type& s,
+                                                                    ContactGeometryIn<Dim>& g, vector d,
+                                                                    const particles_type& ps, int i, int j, double dt) {
+    if constexpr (is_3d<Dim>)
+      return sphere_contact(p, s, g, d, ps, i, j, dt);
+    else
+      return disk_contact(p, s, g, ps, i, j, dt);
+  }
+
+  // What a law reads of a pair besides its motion: dt, the radii and, for a
+  // law that reads them, the masses the contact moves.
+  KOKKOS_INLINE_FUNCTION static void describe_pair(ContactGeometryIn<Dim>& g, const particles_type& ps, int i, int j,
+                                                   double dt) {
+    g.dt = dt;
+    g.radius_1 = ps.radius(i);
+    g.radius_2 = ps.radius(j);
+    if constexpr (law_uses_mass<Law>()) {
+      g.mass_1 = ps.contact_mass(i);
+      g.mass_2 = ps.contact_mass(j);
+    }
+  }
+
+  // A 2D contact between disks i and j, g's normal and overlap set: the
+  // increments, the law, and the load.
+  KOKKOS_INLINE_FUNCTION static ContactLoadIn<Dim> disk_contact(const params_type& p, typename Law::state_type& s,
+                                                                ContactGeometryIn<Dim>& g, const particles_type& ps,
+                                                                int i, int j, double dt) {
+    const Vec2 t = perp(g.normal);
+    // Lever arms to the contact point, the middle of the overlap.
+    const double arm_i = ps.radius(i) - 0.5 * g.overlap, arm_j = ps.radius(j) - 0.5 * g.overlap;
+    const Vec2 v_rel = (ps.velocity(j) - (ps.angular_velocity(j) * arm_j) * t) -
+                       (ps.velocity(i) + (ps.angular_velocity(i) * arm_i) * t);
+    g.normal_increment = -dot(v_rel, g.normal) * dt;
+    g.shear_increment = dot(v_rel, t) * dt;
+    describe_pair(g, ps, i, j, dt);
+    const ContactForceIn<Dim> f = Law::force(p, s, g);
+    ContactLoadIn<Dim> l;
+    l.force = f.normal * g.normal + f.shear * t;
+    l.moment_first = -arm_i * f.shear;
+    l.moment_second = -arm_j * f.shear;
+    return l;
+  }
+
+  // A 3D contact between spheres i and j, their separation d (through the
+  // nearest image) and g's normal and overlap set: the stored shear turned
+  // into the contact's new frame, the increments, the law, and the load.
+  KOKKOS_INLINE_FUNCTION static ContactLoadIn<Dim> sphere_contact(const params_type& p, typename Law::state_type& s,
+                                                                  ContactGeometryIn<Dim>& g, Vec3 d,
+                                                                  const particles_type& ps, int i, int j, double dt) {
+    const double arm_i = ps.radius(i) - 0.5 * g.overlap, arm_j = ps.radius(j) - 0.5 * g.overlap;
+    const Vec3 w_i = ps.angular_velocity(i), w_j = ps.angular_velocity(j);
+    const Vec3 v_rel = (ps.velocity(j) + cross(w_j, -arm_j * g.normal)) - (ps.velocity(i) + cross(w_i, arm_i * g.normal));
+    // The leapfrog moved the centres by dt v: a step ago they were d - dt (v_j - v_i) apart.
+    // The pair's mean spin about the step's mean normal (second order).
+    const Vec3 before = d - dt * (ps.velocity(j) - ps.velocity(i));
+    const double before_length = norm(before);
+    if (before_length > 0.0) {
+      const Vec3 old_normal = (1.0 / before_length) * before, mid = old_normal + g.normal;
+      turn_history<Law>(s, ContactTurn{old_normal, g.normal, 0.5 * dt * dot(w_i + w_j, (1.0 / norm(mid)) * mid)});
+    }
+    const double along = dot(v_rel, g.normal);
+    g.normal_increment = -along * dt;
+    g.shear_increment = dt * (v_rel - along * g.normal);
+    describe_pair(g, ps, i, j, dt);
+    const ContactForceIn<Dim> f = Law::force(p, s, g);
+    ContactLoadIn<Dim> l;
+    l.force = f.normal * g.normal + f.shear;
+    // The force on j acts at -arm_j n from its centre, its reaction on i at +arm_i n.
+    l.moment_first = cross(arm_i * g.normal, -l.force);
+    l.moment_second = cross(-arm_j * g.normal, l.force);
+    return l;
   }
 
   void sum_and_advance(double dt) {
@@ -532,19 +669,19 @@ class Simulation {
     auto wtouch = wall_touch_;
     auto swalls = specimen_walls_;
     auto swall_count = specimen_wall_count_;
-    const Vec2 gravity = settings_.gravity;
+    const vector gravity = settings_.gravity;
     const integrator_params integrator = integrator_;
     Kokkos::parallel_for("vrut::sum_and_advance", Kokkos::RangePolicy<execution_space>(space_, 0, ps.size()),
         KOKKOS_LAMBDA(const int i) {
-          Vec2 f = ps.external_force(i) + ps.mass(i) * gravity;
-          double m = 0.0;
+          vector f = ps.external_force(i) + ps.mass(i) * gravity;
+          spin m{};
           for (int k = 0; k < count(i); ++k) {
             f -= load(i, k).force;
             m += load(i, k).moment_first;
           }
           for (int q = 0; q < rcount(i); ++q) {
             const int c = rev(i, q);
-            const ContactLoad& l = load(c / cap, c % cap);
+            const ContactLoadIn<Dim>& l = load(c / cap, c % cap);
             f += l.force;
             m += l.moment_second;
           }
@@ -557,31 +694,21 @@ class Simulation {
           WallMask holds = 0;
           for (int q = 0; q < swall_count(sp); ++q) {
             const int w = swalls(sp, q);
-            ContactGeometry g;
+            ContactGeometryIn<Dim> g;
             const double dist = wall_distance(wall_view(w), ps.position(i), g.normal);
             g.overlap = ps.radius(i) - dist;
             if (g.overlap <= 0.0 && !((held >> q) & 1u)) continue;
             if (g.overlap <= 0.0 && !is_bonded<WallLaw>(wstate(i, q))) {
               wstate(i, q) = wall_state_type{};
-              wload(i, q) = WallLoad{};
+              wload(i, q) = wall_load_type{};
               continue;
             }
             holds |= WallMask(1) << q;
-            const Vec2 t = perp(g.normal);
-            const double arm = ps.radius(i) - g.overlap;
-            const Vec2 v_rel = ps.velocity(i) - (ps.angular_velocity(i) * arm) * t - wall_view(w).velocity;
-            g.normal_increment = -dot(v_rel, g.normal) * dt;
-            g.shear_increment = dot(v_rel, t) * dt;
-            g.dt = dt;
-            g.radius_1 = 0.0;
-            g.radius_2 = ps.radius(i);
-            if constexpr (law_uses_mass<WallLaw>()) g.mass_2 = ps.contact_mass(i);  // mass_1 = 0: a wall
-            const ContactForce cf = WallLaw::force(wparams(w), wstate(i, q), g);
-            const Vec2 on_disk = cf.normal * g.normal + cf.shear * t;
-            f += on_disk;
-            m -= arm * cf.shear;
-            WallLoad wl;
-            wl.force = -on_disk;
+            const WallPush push = wall_contact(wparams(w), wstate(i, q), g, wall_view(w).velocity, ps, i, dt);
+            f += push.force;
+            m -= push.lever;
+            wall_load_type wl;
+            wl.force = -push.force;
             wl.contacts = g.overlap > 0.0 ? 1.0 : 0.0;
             wload(i, q) = wl;
           }
@@ -592,6 +719,43 @@ class Simulation {
         });
   }
 
+  // A wall's push on a particle: the force, and the lever whose negative is
+  // its moment about the particle's centre.
+  struct WallPush {
+    vector force;
+    spin lever;
+  };
+  // The contact of particle i (the second body) with a wall (the first, at
+  // rest but for its velocity), g's normal (wall -> particle) and overlap
+  // set; the contact point lies on the wall, arm = r - overlap from the centre.
+  KOKKOS_INLINE_FUNCTION static WallPush wall_contact(const wall_params_type& p, wall_state_type& s,
+                                                      ContactGeometryIn<Dim>& g, vector wall_velocity,
+                                                      const particles_type& ps, int i, double dt) {
+    const double arm = ps.radius(i) - g.overlap;
+    g.dt = dt;
+    g.radius_1 = 0.0;
+    g.radius_2 = ps.radius(i);
+    if constexpr (law_uses_mass<WallLaw>()) g.mass_2 = ps.contact_mass(i);  // mass_1 = 0: a wall
+    if constexpr (is_3d<Dim>) {
+      const Vec3 w = ps.angular_velocity(i);
+      const Vec3 v_rel = ps.velocity(i) + cross(w, -arm * g.normal) - wall_velocity;
+      // A plate does not turn: the frame turns only as the sphere spins about the normal.
+      turn_history<WallLaw>(s, ContactTurn{g.normal, g.normal, 0.5 * dt * dot(w, g.normal)});
+      const double along = dot(v_rel, g.normal);
+      g.normal_increment = -along * dt;
+      g.shear_increment = dt * (v_rel - along * g.normal);
+      const ContactForceIn<Dim> cf = WallLaw::force(p, s, g);
+      return {cf.normal * g.normal + cf.shear, arm * cross(g.normal, cf.shear)};
+    } else {
+      const Vec2 t = perp(g.normal);
+      const Vec2 v_rel = ps.velocity(i) - (ps.angular_velocity(i) * arm) * t - wall_velocity;
+      g.normal_increment = -dot(v_rel, g.normal) * dt;
+      g.shear_increment = dot(v_rel, t) * dt;
+      const ContactForceIn<Dim> cf = WallLaw::force(p, s, g);
+      return {cf.normal * g.normal + cf.shear * t, arm * cf.shear};
+    }
+  }
+
   // Each body sums its members' forces and their moments about its centre,
   // in the members' order, advances, and places its members again.
   void advance_bodies(double dt) {
@@ -600,9 +764,9 @@ class Simulation {
     const integrator_params integrator = integrator_;
     Kokkos::parallel_for("vrut::advance_bodies", Kokkos::RangePolicy<execution_space>(space_, 0, bs.size()),
         KOKKOS_LAMBDA(const int b) {
-          const Vec2 X = bs.position(b);
-          Vec2 f;
-          double m = 0.0;
+          const vector X = bs.position(b);
+          vector f;
+          spin m{};
           for (int k = bs.member_begin(b); k < bs.member_begin(b + 1); ++k) {
             const int i = bs.member(k);
             f += ps.force(i);
@@ -624,7 +788,7 @@ class Simulation {
     if (nwalls == 0) return;
     const int blocks = wall_blocks_;
     if (block_load_.extent(0) != static_cast<std::size_t>(blocks) || block_load_.extent(1) != static_cast<std::size_t>(nwalls))
-      block_load_ = Kokkos::View<WallLoad**, memory_space>("wall_block_load", blocks, nwalls);
+      block_load_ = Kokkos::View<wall_load_type**, memory_space>("wall_block_load", blocks, nwalls);
     auto bl = block_load_;
     auto wload = wall_load_;
     auto wtouch = wall_touch_;
@@ -635,7 +799,7 @@ class Simulation {
         Kokkos::RangePolicy<execution_space>(space_, 0, blocks * nwalls), KOKKOS_LAMBDA(const int bw) {
           const int b = bw / nwalls, w = bw % nwalls;
           const int first = begin(owner(w)), last = begin(owner(w) + 1), q = slot(w);
-          WallLoad sum;
+          wall_load_type sum;
           const int end = first + (b + 1) * reduce_block < last ? first + (b + 1) * reduce_block : last;
           // Clear bits stand for zero loads: skipping them leaves the sum bit for bit the same.
           for (int i = first + b * reduce_block; i < end; ++i)
@@ -649,15 +813,14 @@ class Simulation {
     auto control_state = control_state_;
     Kokkos::parallel_for("vrut::move_walls", Kokkos::RangePolicy<execution_space>(space_, 0, nwalls),
         KOKKOS_LAMBDA(const int w) {
-          WallLoad sum;
+          wall_load_type sum;
           const int own_blocks = (begin(owner(w) + 1) - begin(owner(w)) + reduce_block - 1) / reduce_block;
           for (int b = 0; b < own_blocks; ++b) sum += bl(b, w);
           total(w) = sum;
           impulse(w) += dt * sum.force;
-          Wall wall = wall_view(w);
+          wall_type wall = wall_view(w);
           Controller::control(control(w), control_state(w), wall, sum, dt);
-          wall.start += dt * wall.velocity;
-          wall.end += dt * wall.velocity;
+          translate(wall, dt * wall.velocity);
           wall_view(w) = wall;
         });
   }
@@ -667,6 +830,7 @@ class Simulation {
     auto partner = contacts_.partner;
     auto count = contacts_.count;
     auto state = contacts_.state;
+    const auto box = settings_.box;
     int total = 0;
     if (contacts_.builds == 0) return 0;
     const int first = specimen < 0 ? 0 : specimen_range(specimen).first;
@@ -676,7 +840,7 @@ class Simulation {
           for (int k = 0; k < count(i); ++k) {
             const bool bonded = is_bonded<Law>(state(i, k));
             const int j = partner(i, k);
-            const bool touching = norm(ps.position(j) - ps.position(i)) < ps.radius(i) + ps.radius(j);
+            const bool touching = norm(box.separation(ps.position(i), ps.position(j))) < ps.radius(i) + ps.radius(j);
             if (bonds_only ? bonded : (bonded || touching)) ++sum;
           }
         },
@@ -716,7 +880,7 @@ class Simulation {
       Kokkos::deep_copy(specimen_walls_, hw);
       Kokkos::deep_copy(specimen_wall_count_, hc);
     }
-    walls_ = Kokkos::View<Wall*, memory_space>("walls", nwalls);
+    walls_ = Kokkos::View<wall_type*, memory_space>("walls", nwalls);
     wall_params_ = Kokkos::View<wall_params_type*, memory_space>("wall_params", nwalls);
     control_ = Kokkos::View<controller_params*, memory_space>("wall_control", nwalls);
     Kokkos::View<controller_state*, memory_space> control_state("wall_control_state", nwalls);
@@ -724,8 +888,8 @@ class Simulation {
       Kokkos::deep_copy(Kokkos::subview(control_state, std::make_pair(std::size_t(0), control_state_.extent(0))),
                         control_state_);
     control_state_ = control_state;
-    wall_total_ = Kokkos::View<WallLoad*, memory_space>("wall_total", nwalls);
-    wall_impulse_ = Kokkos::View<Vec2*, memory_space>("wall_impulse", nwalls);
+    wall_total_ = Kokkos::View<wall_load_type*, memory_space>("wall_total", nwalls);
+    wall_impulse_ = Kokkos::View<vector*, memory_space>("wall_impulse", nwalls);
     // Contact state with walls: keep what the existing walls had (a new wall
     // takes a new slot of its specimen, so the existing slots keep their walls).
     Kokkos::View<wall_state_type**, memory_space> state("wall_state", n, slots);
@@ -736,16 +900,19 @@ class Simulation {
           KOKKOS_LAMBDA(const int i) { for (int w = 0; w < kept; ++w) state(i, w) = old(i, w); });
     }
     wall_state_ = state;
-    wall_load_ = Kokkos::View<WallLoad**, memory_space>("wall_load", n, slots);
+    wall_load_ = Kokkos::View<wall_load_type**, memory_space>("wall_load", n, slots);
     block_load_ = {};
     push_walls();
   }
  private:
-  // Bodies from ParticleSet::body, on the host mirrors of the disks' centres,
-  // masses, inertias and specimens: each body's mass is its members', its
-  // centre their centre of mass, its inertia theirs about it.
-  template <class HostVec2, class HostDouble, class HostInt>
-  void build_bodies(const ParticleSet& set, const HostVec2& x, const HostDouble& mass, const HostDouble& inertia,
+  // Bodies from ParticleSet::body, on the host mirrors of the particles'
+  // centres, masses, inertias and specimens: each body's mass is its
+  // members', its centre their centre of mass, its inertia theirs about it
+  // (in 3D its principal moments and axes, geometry/clump3.hpp). A body's
+  // members are given where they lie together, not wrapped across a
+  // periodic face.
+  template <class HostVector, class HostDouble, class HostInt>
+  void build_bodies(const ParticleSet& set, const HostVector& x, const HostDouble& mass, const HostDouble& inertia,
                     const HostInt& specimen) {
     const int n = static_cast<int>(set.size());
     auto hcm = Kokkos::create_mirror_view(particles_.contact_mass);
@@ -762,7 +929,7 @@ class Simulation {
     }
     std::vector<double> member_mass(n, 0.0);
     if (nb > 0) {
-      bodies_ = Bodies<memory_space>(nb, total);
+      bodies_ = bodies_type(nb, total);
       auto hx = Kokkos::create_mirror_view(bodies_.position);
       auto hm = Kokkos::create_mirror_view(bodies_.mass);
       auto hi = Kokkos::create_mirror_view(bodies_.inertia);
@@ -770,30 +937,51 @@ class Simulation {
       auto hmember = Kokkos::create_mirror_view(bodies_.member);
       auto hoff = Kokkos::create_mirror_view(bodies_.offset);
       auto hbody = Kokkos::create_mirror_view(particles_.body);
+      auto hq = Kokkos::create_mirror_view(bodies_.rotation);
       Kokkos::deep_copy(hbody, -1);
       int slot = 0;
       for (int b = 0; b < nb; ++b) {
-        double M = 0.0, mx = 0.0, my = 0.0;
-        for (int i : members[b]) {
+        for (int i : members[b])
           if (specimen(i) != specimen(members[b].front()))
             throw std::invalid_argument("vrut::Simulation: body " + std::to_string(b) + " has members in two specimens");
-          M += mass(i), mx += mass(i) * x(i).x, my += mass(i) * x(i).y;
-        }
-        const Vec2 X{mx / M, my / M};
-        double I = 0.0;
-        for (int i : members[b]) I += inertia(i) + mass(i) * dot(x(i) - X, x(i) - X);
-        hx(b) = X, hm(b) = M, hi(b) = I, hbegin(b) = slot;
-        for (int i : members[b]) {
-          hmember(slot) = i;
-          hoff(slot) = x(i) - X;
-          hbody(i) = b;
-          hcm(i) = M;
-          // The body as felt at the member's centre, for the time step.
-          member_mass[i] = 1.0 / (1.0 / M + dot(x(i) - X, x(i) - X) / I);
-          ++slot;
+        hbegin(b) = slot;
+        if constexpr (is_3d<Dim>) {
+          std::vector<Vec3> centres;
+          std::vector<double> radii, masses;
+          for (int i : members[b]) centres.push_back(x(i)), radii.push_back(set.radius[i]), masses.push_back(mass(i));
+          const ClumpProperties3 c = clump_properties_of_masses(centres, radii, masses);
+          hx(b) = c.centre, hm(b) = c.mass, hi(b) = c.principal_moments, hq(b) = c.orientation;
+          for (std::size_t k = 0; k < members[b].size(); ++k) {
+            const int i = members[b][k];
+            hmember(slot) = i;
+            hoff(slot) = c.offsets[k];
+            hbody(i) = b;
+            hcm(i) = c.mass;
+            // The body as felt at the member's centre, for the time step, about its weakest axis.
+            const Vec3 d = x(i) - c.centre;
+            member_mass[i] = 1.0 / (1.0 / c.mass + dot(d, d) / c.principal_moments.x);
+            ++slot;
+          }
+        } else {
+          double M = 0.0, mx = 0.0, my = 0.0;
+          for (int i : members[b]) M += mass(i), mx += mass(i) * x(i).x, my += mass(i) * x(i).y;
+          const Vec2 X{mx / M, my / M};
+          double I = 0.0;
+          for (int i : members[b]) I += inertia(i) + mass(i) * dot(x(i) - X, x(i) - X);
+          hx(b) = X, hm(b) = M, hi(b) = I;
+          for (int i : members[b]) {
+            hmember(slot) = i;
+            hoff(slot) = x(i) - X;
+            hbody(i) = b;
+            hcm(i) = M;
+            // The body as felt at the member's centre, for the time step.
+            member_mass[i] = 1.0 / (1.0 / M + dot(x(i) - X, x(i) - X) / I);
+            ++slot;
+          }
         }
       }
       hbegin(nb) = slot;
+      Kokkos::deep_copy(bodies_.rotation, hq);
       Kokkos::deep_copy(bodies_.position, hx);
       Kokkos::deep_copy(bodies_.mass, hm);
       Kokkos::deep_copy(bodies_.inertia, hi);
@@ -835,35 +1023,41 @@ class Simulation {
   }
 
   execution_space space_;
-  SimulationSettings settings_;
+  settings_type settings_;
   integrator_params integrator_;
-  Particles<memory_space> particles_;
-  Bodies<memory_space> bodies_;
+  particles_type particles_;
+  bodies_type bodies_;
   std::vector<double> pair_stiffness_;         // groups x groups, the table's stiffness (-1: not set)
   std::vector<double> lightest_contact_mass_;  // per group (0: absent)
   Kokkos::View<params_type**, memory_space> law_params_;
   double max_law_stiffness_ = 0.0, wall_stiffness_ = 0.0, largest_diameter_ = 0.0;
   int wall_blocks_ = 0;
-  ContactList<Law, execution_space> contacts_;
+  ContactList<Law, execution_space, Dim> contacts_;
 
-  std::vector<Wall> walls_host_;
+  std::vector<wall_type> walls_host_;
   std::vector<wall_params_type> wall_params_host_;
   std::vector<controller_params> control_host_;
   std::vector<int> wall_specimen_host_, specimen_begin_host_;
   Kokkos::View<int*, memory_space> specimen_begin_, wall_specimen_, wall_slot_, specimen_wall_count_;
   Kokkos::View<int**, memory_space> specimen_walls_;
-  Kokkos::View<Wall*, memory_space> walls_;
+  Kokkos::View<wall_type*, memory_space> walls_;
   Kokkos::View<wall_params_type*, memory_space> wall_params_;
   Kokkos::View<controller_params*, memory_space> control_;
   Kokkos::View<controller_state*, memory_space> control_state_;
   Kokkos::View<wall_state_type**, memory_space> wall_state_;
-  Kokkos::View<WallLoad**, memory_space> wall_load_, block_load_;
+  Kokkos::View<wall_load_type**, memory_space> wall_load_, block_load_;
   Kokkos::View<WallMask*, memory_space> wall_touch_;  // per disk: bit q set where wall slot q holds state or load
-  Kokkos::View<WallLoad*, memory_space> wall_total_;
-  Kokkos::View<Vec2*, memory_space> wall_impulse_;
+  Kokkos::View<wall_load_type*, memory_space> wall_total_;
+  Kokkos::View<vector*, memory_space> wall_impulse_;
 
   double time_ = 0.0, prepared_dt_ = 0.0;
   long steps_ = 0;
 };
+
+// The engine in 3D: spheres, rectangular plates (Wall3), periodic axes.
+template <class Law, class Space = Kokkos::DefaultExecutionSpace, class Integrator = CentralDifference,
+          class Controller = ServoControl, class WallLaw = Linear>
+using Simulation3 = Simulation<Law, Space, Integrator, Controller, WallLaw, Dim3>;
+using SimulationSettings3 = SimulationSettingsIn<Dim3>;
 
 }  // namespace vrut

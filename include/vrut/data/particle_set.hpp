@@ -1,5 +1,6 @@
 #pragma once
-// Host-side description of disks, the input from which a Simulation is built.
+// Host-side description of disks (2D) or spheres (3D), the input from which
+// a Simulation is built.
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -9,6 +10,7 @@ namespace vrut {
 
 struct ParticleSet {
   std::vector<double> x, y, radius, density;
+  std::vector<double> z;  // 3D only: empty for disks, one per sphere
   std::vector<int> group;
   // Which specimen of an ensemble each disk belongs to (0 for a single run).
   // Disks of different specimens never touch, whatever their positions, and
@@ -41,13 +43,24 @@ struct ParticleSet {
     body.push_back(member_of);
   }
 
+  // A sphere, for a 3D simulation: as add, with the third coordinate.
+  void add_sphere(double px, double py, double pz, double r, double rho, int g = 0, int member_of = -1) {
+    if (z.size() != x.size()) throw std::invalid_argument("vrut: a set of disks cannot take a sphere");
+    add(px, py, r, rho, g, member_of);
+    z.push_back(pz);
+  }
+
   // Appends every disk of `other` as a new specimen, its bodies numbered
   // after the ones already here; returns its index.
   int append_specimen(const ParticleSet& other) {
     const int s = size() == 0 ? 0 : specimens();
     const int first_body = bodies();
+    const bool spheres = !z.empty() || (size() == 0 && !other.z.empty());
+    if (spheres ? (z.size() != size() || other.z.size() != other.size()) : !other.z.empty())
+      throw std::invalid_argument("vrut: an ensemble's specimens must all be disks or all spheres");
     x.insert(x.end(), other.x.begin(), other.x.end());
     y.insert(y.end(), other.y.begin(), other.y.end());
+    z.insert(z.end(), other.z.begin(), other.z.end());
     radius.insert(radius.end(), other.radius.begin(), other.radius.end());
     density.insert(density.end(), other.density.begin(), other.density.end());
     group.insert(group.end(), other.group.begin(), other.group.end());

@@ -1,6 +1,8 @@
 #pragma once
-// Disk state as a structure of arrays, one Kokkos::View per quantity.
-#include <vrut/data/vec2.hpp>
+// Particle state as a structure of arrays, one Kokkos::View per quantity:
+// disks in 2D, spheres in 3D (data/dimension.hpp says what a vector, a spin
+// and an orientation are in each).
+#include <vrut/data/dimension.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -16,17 +18,22 @@ enum Fixity : int {
   no_rotation = 2,          // angular velocity stays as given
 };
 
-template <class MemorySpace>
+template <class MemorySpace, class D = Dim2>
 struct Particles {
   using memory_space = MemorySpace;
+  using dimension = D;
+  using vector = typename D::vector;
+  using spin = typename D::spin;
   template <class T>
   using view = Kokkos::View<T*, MemorySpace>;
 
-  view<Vec2> position, velocity, force, external_force, displacement;
-  view<double> radius, mass, inertia, rotation, angular_velocity, moment;
+  view<vector> position, velocity, force, external_force, displacement;
+  view<double> radius, mass, inertia;  // inertia: about any axis through the centre
+  view<typename D::orientation> rotation;
+  view<spin> angular_velocity, moment;
   view<int> group, fixity, specimen;  // specimen: index in an ensemble (ParticleSet::specimen)
   // The rigid body a disk is a member of (data/bodies.hpp), -1 for a free
-  // disk; and the mass a contact on it moves: its body's, or its own.
+  // particle; and the mass a contact on it moves: its body's, or its own.
   view<int> body;
   view<double> contact_mass;
 

@@ -20,6 +20,10 @@ KOKKOS_INLINE_FUNCTION Vec2 operator*(Vec2 a, double s) { return {s * a.x, s * a
 KOKKOS_INLINE_FUNCTION Vec2& operator+=(Vec2& a, Vec2 b) { a.x += b.x; a.y += b.y; return a; }
 KOKKOS_INLINE_FUNCTION Vec2& operator-=(Vec2& a, Vec2 b) { a.x -= b.x; a.y -= b.y; return a; }
 
+// Component k (0, 1: x, y).
+KOKKOS_INLINE_FUNCTION double& component(Vec2& v, int k) { return k == 0 ? v.x : v.y; }
+KOKKOS_INLINE_FUNCTION double component(const Vec2& v, int k) { return k == 0 ? v.x : v.y; }
+
 KOKKOS_INLINE_FUNCTION double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 // z-component of the 3D cross product of two in-plane vectors.
 KOKKOS_INLINE_FUNCTION double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }

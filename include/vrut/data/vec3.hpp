@@ -18,6 +18,8 @@ KOKKOS_INLINE_FUNCTION Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y -
 KOKKOS_INLINE_FUNCTION Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
 KOKKOS_INLINE_FUNCTION Vec3 operator*(double s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
 KOKKOS_INLINE_FUNCTION Vec3 operator*(Vec3 a, double s) { return {s * a.x, s * a.y, s * a.z}; }
+// Each component divided, as a scalar formula divides (not times 1 / s).
+KOKKOS_INLINE_FUNCTION Vec3 operator/(Vec3 a, double s) { return {a.x / s, a.y / s, a.z / s}; }
 KOKKOS_INLINE_FUNCTION Vec3& operator+=(Vec3& a, Vec3 b) { a.x += b.x; a.y += b.y; a.z += b.z; return a; }
 KOKKOS_INLINE_FUNCTION Vec3& operator-=(Vec3& a, Vec3 b) { a.x -= b.x; a.y -= b.y; a.z -= b.z; return a; }
 

@@ -1,5 +1,7 @@
 #pragma once
-// Straight walls (segments) and the disk-wall contact geometry.
+// Straight walls (segments) and the disk-wall contact geometry, in 2D; the
+// load particles put on a wall, in 2D and 3D (walls3.hpp has the 3D plates).
+#include <vrut/data/dimension.hpp>
 #include <vrut/data/vec2.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -21,6 +23,12 @@ KOKKOS_INLINE_FUNCTION Vec2 inward_normal(const Wall& w) {
 
 KOKKOS_INLINE_FUNCTION double length(const Wall& w) { return norm(w.end - w.start); }
 
+// The wall moved by d.
+KOKKOS_INLINE_FUNCTION void translate(Wall& w, Vec2 d) {
+  w.start += d;
+  w.end += d;
+}
+
 // Closest point of the segment to c; normal from there to c (wall -> disk).
 // Returns the distance. A centre exactly on the segment gets the inward normal.
 KOKKOS_INLINE_FUNCTION double wall_distance(const Wall& w, Vec2 c, Vec2& normal) {
@@ -34,13 +42,16 @@ KOKKOS_INLINE_FUNCTION double wall_distance(const Wall& w, Vec2 c, Vec2& normal)
   return dist;
 }
 
-// Sum of the forces the disks exert on a wall, and how many touch it.
-struct WallLoad {
-  Vec2 force;
+// Sum of the forces the particles exert on a wall, and how many touch it.
+template <class D>
+struct WallLoadIn {
+  typename D::vector force;
   double contacts = 0.0;
 };
+using WallLoad = WallLoadIn<Dim2>;
 
-KOKKOS_INLINE_FUNCTION WallLoad& operator+=(WallLoad& a, const WallLoad& b) {
+template <class D>
+KOKKOS_INLINE_FUNCTION WallLoadIn<D>& operator+=(WallLoadIn<D>& a, const WallLoadIn<D>& b) {
   a.force += b.force;
   a.contacts += b.contacts;
   return a;

@@ -29,12 +29,13 @@ struct ClumpProperties3 {
 };
 
 // The inertia tensor about `about` of spheres of the given centres, radii
-// and density (world frame).
-inline Eigen::Matrix3d sphere_inertia_tensor(const std::vector<Vec3>& centres, const std::vector<double>& radii,
-                                             double density, Vec3 about) {
+// and masses (world frame).
+inline Eigen::Matrix3d sphere_inertia_tensor_of_masses(const std::vector<Vec3>& centres,
+                                                       const std::vector<double>& radii,
+                                                       const std::vector<double>& masses, Vec3 about) {
   Eigen::Matrix3d tensor = Eigen::Matrix3d::Zero();
   for (std::size_t i = 0; i < centres.size(); ++i) {
-    const double r = radii[i], m = density * 4.0 / 3.0 * M_PI * r * r * r;
+    const double r = radii[i], m = masses[i];
     const Vec3 d = centres[i] - about;
     const Eigen::Vector3d e(d.x, d.y, d.z);
     tensor += (0.4 * m * r * r + m * e.squaredNorm()) * Eigen::Matrix3d::Identity() - m * e * e.transpose();
@@ -42,21 +43,36 @@ inline Eigen::Matrix3d sphere_inertia_tensor(const std::vector<Vec3>& centres, c
   return tensor;
 }
 
-inline ClumpProperties3 clump_properties(const std::vector<Vec3>& centres, const std::vector<double>& radii,
-                                         double density) {
-  if (centres.empty() || centres.size() != radii.size())
-    throw std::invalid_argument("a clump needs one radius per member, and at least one member");
-  if (!(density > 0.0)) throw std::invalid_argument("a clump's density must be positive");
+// Each sphere's mass at the given density.
+inline std::vector<double> sphere_masses(const std::vector<double>& radii, double density) {
+  std::vector<double> masses;
+  for (double r : radii) masses.push_back(density * 4.0 / 3.0 * M_PI * r * r * r);
+  return masses;
+}
+
+// The same with one density for all.
+inline Eigen::Matrix3d sphere_inertia_tensor(const std::vector<Vec3>& centres, const std::vector<double>& radii,
+                                             double density, Vec3 about) {
+  return sphere_inertia_tensor_of_masses(centres, radii, sphere_masses(radii, density), about);
+}
+
+// A clump of spheres of the given masses (a simulation's own, which may
+// differ between members).
+inline ClumpProperties3 clump_properties_of_masses(const std::vector<Vec3>& centres, const std::vector<double>& radii,
+                                                   const std::vector<double>& masses) {
+  if (centres.empty() || centres.size() != radii.size() || masses.size() != radii.size())
+    throw std::invalid_argument("a clump needs one radius and one mass per member, and at least one member");
   ClumpProperties3 c;
   Vec3 moment{};
   for (std::size_t i = 0; i < centres.size(); ++i) {
     if (!(radii[i] > 0.0)) throw std::invalid_argument("a clump member's radius must be positive");
-    const double m = density * 4.0 / 3.0 * M_PI * radii[i] * radii[i] * radii[i];
-    c.mass += m;
-    moment += m * centres[i];
+    if (!(masses[i] > 0.0)) throw std::invalid_argument("a clump member's mass must be positive");
+    c.mass += masses[i];
+    moment += masses[i] * centres[i];
   }
   c.centre = (1.0 / c.mass) * moment;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(sphere_inertia_tensor(centres, radii, density, c.centre));
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(
+      sphere_inertia_tensor_of_masses(centres, radii, masses, c.centre));
   Eigen::Matrix3d axes = solver.eigenvectors();  // columns: the principal axes, moments ascending
   if (axes.determinant() < 0.0) axes.col(2) = -axes.col(2);  // a rotation, not a reflection
   const Eigen::Vector3d moments = solver.eigenvalues();
@@ -65,6 +81,12 @@ inline ClumpProperties3 clump_properties(const std::vector<Vec3>& centres, const
   c.orientation = normalized(Quaternion{q.w(), q.x(), q.y(), q.z()});
   for (const Vec3& x : centres) c.offsets.push_back(rotate_back(c.orientation, x - c.centre));
   return c;
+}
+
+inline ClumpProperties3 clump_properties(const std::vector<Vec3>& centres, const std::vector<double>& radii,
+                                         double density) {
+  if (!(density > 0.0)) throw std::invalid_argument("a clump's density must be positive");
+  return clump_properties_of_masses(centres, radii, sphere_masses(radii, density));
 }
 
 }  // namespace vrut

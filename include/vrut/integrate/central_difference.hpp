@@ -5,8 +5,15 @@
 // which removes energy in proportion to the unbalanced force, not to speed.
 // Velocities live at half steps: v(t+dt/2) = v(t-dt/2) + F_d/m dt,
 // x(t+dt) = x(t) + v(t+dt/2) dt.
+//
+// In 3D the same, component by component, for the translation and for a
+// sphere's spin; a sphere's orientation turns by the angle |w| dt about w.
+// A 3D rigid body turns by the splitting of integrate/rigid_rotation.hpp,
+// kicked by the damped torque.
 #include <vrut/data/bodies.hpp>
+#include <vrut/data/dimension.hpp>
 #include <vrut/data/particles.hpp>
+#include <vrut/integrate/rigid_rotation.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -21,43 +28,83 @@ struct CentralDifference {
     const double sign = v > 0.0 ? 1.0 : (v < 0.0 ? -1.0 : 0.0);
     return f - alpha * (f < 0.0 ? -f : f) * sign;
   }
+  KOKKOS_INLINE_FUNCTION static Vec2 damped(Vec2 f, Vec2 v, double alpha) {
+    return {damped(f.x, v.x, alpha), damped(f.y, v.y, alpha)};
+  }
+  KOKKOS_INLINE_FUNCTION static Vec3 damped(Vec3 f, Vec3 v, double alpha) {
+    return {damped(f.x, v.x, alpha), damped(f.y, v.y, alpha), damped(f.z, v.z, alpha)};
+  }
 
-  template <class MemorySpace>
-  KOKKOS_INLINE_FUNCTION static void advance(const params_type& p, const Particles<MemorySpace>& ps, int i,
-                                             Vec2 force, double moment, double dt) {
+  // v += F_d / m dt, component by component.
+  KOKKOS_INLINE_FUNCTION static void kick(Vec2& v, Vec2 force, double inv_m, double dt, double alpha) {
+    v.x += damped(force.x, v.x, alpha) * inv_m * dt;
+    v.y += damped(force.y, v.y, alpha) * inv_m * dt;
+  }
+  KOKKOS_INLINE_FUNCTION static void kick(Vec3& v, Vec3 force, double inv_m, double dt, double alpha) {
+    v.x += damped(force.x, v.x, alpha) * inv_m * dt;
+    v.y += damped(force.y, v.y, alpha) * inv_m * dt;
+    v.z += damped(force.z, v.z, alpha) * inv_m * dt;
+  }
+  // A sphere's (or disk's) spin and orientation.
+  KOKKOS_INLINE_FUNCTION static void spin(double& w, double moment, double inertia, double dt, double alpha) {
+    w += damped(moment, w, alpha) / inertia * dt;
+  }
+  KOKKOS_INLINE_FUNCTION static void spin(Vec3& w, Vec3 moment, double inertia, double dt, double alpha) {
+    w.x += damped(moment.x, w.x, alpha) / inertia * dt;
+    w.y += damped(moment.y, w.y, alpha) / inertia * dt;
+    w.z += damped(moment.z, w.z, alpha) / inertia * dt;
+  }
+  KOKKOS_INLINE_FUNCTION static void turn(double& angle, double w, double dt) { angle += w * dt; }
+  KOKKOS_INLINE_FUNCTION static void turn(Quaternion& q, Vec3 w, double dt) {
+    const double rate = norm(w);
+    if (rate > 0.0) q = normalized(axis_angle((1.0 / rate) * w, rate * dt) * q);
+  }
+
+  template <class MemorySpace, class D>
+  KOKKOS_INLINE_FUNCTION static void advance(const params_type& p, const Particles<MemorySpace, D>& ps, int i,
+                                             typename D::vector force, typename D::spin moment, double dt) {
     const int fix = ps.fixity(i);
-    Vec2 v = ps.velocity(i);
+    typename D::vector v = ps.velocity(i);
     if (!(fix & prescribed_velocity)) {
       const double inv_m = 1.0 / ps.mass(i);
-      v.x += damped(force.x, v.x, p.damping) * inv_m * dt;
-      v.y += damped(force.y, v.y, p.damping) * inv_m * dt;
+      kick(v, force, inv_m, dt, p.damping);
       ps.velocity(i) = v;
     }
     ps.position(i) += dt * v;
     ps.displacement(i) += dt * v;
-    double w = ps.angular_velocity(i);
+    typename D::spin w = ps.angular_velocity(i);
     if (!(fix & (no_rotation | prescribed_velocity))) {
-      w += damped(moment, w, p.damping) / ps.inertia(i) * dt;
+      spin(w, moment, ps.inertia(i), dt, p.damping);
       ps.angular_velocity(i) = w;
     }
-    ps.rotation(i) += w * dt;
+    turn(ps.rotation(i), w, dt);
   }
 
-  // A rigid body (data/bodies.hpp) advances as one disk does, with its mass
-  // and moment of inertia, the summed force and the moment about its centre.
-  template <class MemorySpace>
-  KOKKOS_INLINE_FUNCTION static void advance_body(const params_type& p, const Bodies<MemorySpace>& bs, int b,
-                                                  Vec2 force, double moment, double dt) {
-    Vec2 v = bs.velocity(b);
+  // A rigid body (data/bodies.hpp) translates as one particle does, with its
+  // mass and the summed force. In 2D it turns as a disk, with its moment of
+  // inertia and the moment about its centre; in 3D its angular momentum takes
+  // the damped torque's kick and the body turns freely with it over the step.
+  template <class MemorySpace, class D>
+  KOKKOS_INLINE_FUNCTION static void advance_body(const params_type& p, const Bodies<MemorySpace, D>& bs, int b,
+                                                  typename D::vector force, typename D::spin moment, double dt) {
+    typename D::vector v = bs.velocity(b);
     const double inv_m = 1.0 / bs.mass(b);
-    v.x += damped(force.x, v.x, p.damping) * inv_m * dt;
-    v.y += damped(force.y, v.y, p.damping) * inv_m * dt;
+    kick(v, force, inv_m, dt, p.damping);
     bs.velocity(b) = v;
     bs.position(b) += dt * v;
-    double w = bs.angular_velocity(b);
-    w += damped(moment, w, p.damping) / bs.inertia(b) * dt;
-    bs.angular_velocity(b) = w;
-    bs.rotation(b) += w * dt;
+    if constexpr (is_3d<D>) {
+      Quaternion q = bs.rotation(b);
+      Vec3 momentum = bs.angular_momentum(b);
+      rotate_rigid_body(q, momentum, damped(moment, bs.angular_velocity(b), p.damping), bs.inertia(b), dt);
+      bs.rotation(b) = q;
+      bs.angular_momentum(b) = momentum;
+      bs.angular_velocity(b) = angular_velocity(q, momentum, bs.inertia(b));
+    } else {
+      double w = bs.angular_velocity(b);
+      w += damped(moment, w, p.damping) / bs.inertia(b) * dt;
+      bs.angular_velocity(b) = w;
+      bs.rotation(b) += w * dt;
+    }
   }
 };
 

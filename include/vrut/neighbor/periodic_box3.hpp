@@ -3,9 +3,13 @@
 // along its depth: a particle that leaves through one face comes back
 // through the other, and two particles see each other through the face by
 // the nearest image. Usable in Kokkos kernels.
+#include <vrut/data/dimension.hpp>
+#include <vrut/data/vec2.hpp>
 #include <vrut/data/vec3.hpp>
 
 #include <Kokkos_Core.hpp>
+
+#include <type_traits>
 
 namespace vrut {
 
@@ -39,5 +43,17 @@ struct PeriodicBox3 {
     return x;
   }
 };
+
+// The plane has no periodic axis (yet): the separation is the difference.
+struct OpenBox2 {
+  bool periodic[2] = {false, false};
+  Vec2 low, high;
+  KOKKOS_INLINE_FUNCTION double length(int k) const { return component(high, k) - component(low, k); }
+  KOKKOS_INLINE_FUNCTION Vec2 separation(Vec2 a, Vec2 b) const { return b - a; }
+};
+
+// The box an engine of dimension D keeps its particles in.
+template <class D>
+using PeriodicBox = std::conditional_t<is_3d<D>, PeriodicBox3, OpenBox2>;
 
 }  // namespace vrut

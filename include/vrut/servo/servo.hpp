@@ -1,8 +1,10 @@
 #pragma once
 // Wall controllers: policies that set a wall's velocity once per step from
-// the load the disks put on it.
+// the load the particles put on it. They act on a 2D segment (Wall) or a 3D
+// plate (Wall3) alike: along its inward normal.
 #include <vrut/contact/geometry.hpp>
 #include <vrut/data/walls.hpp>
+#include <vrut/data/walls3.hpp>
 #include <vrut/integrate/central_difference.hpp>
 
 #include <Kokkos_Core.hpp>
@@ -13,7 +15,8 @@ namespace vrut {
 struct VelocityControl {
   struct params_type {};
   struct state_type {};
-  KOKKOS_INLINE_FUNCTION static void control(const params_type&, state_type&, Wall&, const WallLoad&, double) {}
+  template <class W, class Load>
+  KOKKOS_INLINE_FUNCTION static void control(const params_type&, state_type&, W&, const Load&, double) {}
 };
 
 // PFC-style servo with integral action: moves the wall along its inward
@@ -52,12 +55,13 @@ struct ServoControl {
     return p;
   }
 
-  KOKKOS_INLINE_FUNCTION static double compressive_force(const Wall& w, const WallLoad& load) {
+  template <class W, class Load>
+  KOKKOS_INLINE_FUNCTION static double compressive_force(const W& w, const Load& load) {
     return -dot(load.force, inward_normal(w));
   }
 
-  KOKKOS_INLINE_FUNCTION static void control(const params_type& p, state_type& s, Wall& w, const WallLoad& load,
-                                             double dt) {
+  template <class W, class Load>
+  KOKKOS_INLINE_FUNCTION static void control(const params_type& p, state_type& s, W& w, const Load& load, double dt) {
     if (!p.enabled) return;
     const double contacts = load.contacts > 1.0 ? load.contacts : 1.0;
     const double error = (p.target_force - compressive_force(w, load)) / (p.contact_stiffness * contacts);
@@ -91,10 +95,10 @@ struct LoadControl {
     return p;
   }
 
-  KOKKOS_INLINE_FUNCTION static void control(const params_type& p, state_type&, Wall& w, const WallLoad& load,
-                                             double dt) {
+  template <class W, class Load>
+  KOKKOS_INLINE_FUNCTION static void control(const params_type& p, state_type&, W& w, const Load& load, double dt) {
     if (!p.enabled) return;
-    const Vec2 n = inward_normal(w);
+    const auto n = inward_normal(w);
     const double v = dot(w.velocity, n);
     const double unbalanced = p.target_force - ServoControl::compressive_force(w, load);
     const double speed = v + CentralDifference::damped(unbalanced, v, p.damping) / p.mass * dt;
