@@ -8,11 +8,11 @@
 //     the first, in the plane normal to the contact.
 //   - A shear spring's stored force must turn with the contact: as the pair
 //     rolls or spins, the force that was tangent yesterday has a normal part
-//     today. turn_with_contact() carries it: the least rotation that takes
-//     the old normal to the new one, then the pair's mean spin about the
-//     normal, as YADE's ScGeom and PFC do; a last projection into the plane
-//     (keeping the magnitude, as LAMMPS' gran/hooke/history does) takes out
-//     what rounding leaves.
+//     today. ContactTurn carries it: the least rotation that takes the old
+//     normal to the new one, then the pair's mean spin about the normal, as
+//     YADE's ScGeom and PFC do; a last projection into the plane (keeping
+//     the magnitude, as LAMMPS' gran/hooke/history does) takes out what
+//     rounding leaves.
 #include <vrut/contact/geometry.hpp>
 #include <vrut/data/vec3.hpp>
 
@@ -60,36 +60,44 @@ KOKKOS_INLINE_FUNCTION ContactGeometry3 plane_sphere(Vec3 point, Vec3 plane_norm
   return contact_kinematics(plane_normal, r - height, Vec3{}, Vec3{}, Vec3{}, -height * plane_normal, v, w, dt);
 }
 
-// v turned about the unit axis k by the angle whose cosine and sine are c, s (Rodrigues).
-KOKKOS_INLINE_FUNCTION Vec3 rodrigues(Vec3 v, Vec3 k, double c, double s) {
-  return c * v + s * cross(k, v) + ((1.0 - c) * dot(k, v)) * k;
-}
-
-// A shear vector of the old contact frame carried into the new one: turned
-// by the least rotation from old_normal to new_normal, then by `twist`
-// (radians) about the new normal (dt times the pair's mean angular
-// velocity along it), then projected into the new tangent plane with its
-// magnitude kept.
-KOKKOS_INLINE_FUNCTION Vec3 turn_with_contact(Vec3 shear, Vec3 old_normal, Vec3 new_normal, double twist) {
-  const Vec3 axis = cross(old_normal, new_normal);
-  const double s = norm(axis);
-  if (s > 0.0) shear = rodrigues(shear, (1.0 / s) * axis, dot(old_normal, new_normal), s);
-  if (twist != 0.0) shear = rodrigues(shear, new_normal, cos(twist), sin(twist));
-  const double before = norm(shear);
-  const Vec3 in_plane = shear - dot(shear, new_normal) * new_normal;
-  const double after = norm(in_plane);
-  return after > 0.0 ? (before / after) * in_plane : in_plane;
-}
-
-// turn_with_contact as a function of the shear vector alone, for one
-// contact and step: what a law's `turn` hook applies to each vector it keeps
-// (contact/concept.hpp, turn_history).
+// A contact frame's turn over one step, from the unit normal `old_normal`
+// to `new_normal` with `twist` radians about the normal (dt times the
+// pair's mean angular velocity along the mean of the two normals). Applied
+// to a shear vector of the old frame (normal to old_normal):
+//   - the least rotation taking old_normal to new_normal, exactly, as
+//     v - (v . n') / (1 + n . n') (n + n') (for v normal to n; the
+//     component along the rotation's axis stays, the rest turns with n);
+//   - the twist to second order, v + twist n' x v: the step's direction
+//     error is of order twist^3, and the length is restored below;
+//   - a projection into the new tangent plane, taking out what rounding
+//     leaves, and the vector's old length restored, as LAMMPS'
+//     gran/hooke/history keeps it.
+// No trigonometry, one division and one square root a vector: the turn is
+// done for every contact at every step. What depends only on the normals
+// is worked out once in the constructor, for all of a law's vectors.
 struct ContactTurn {
-  Vec3 old_normal, new_normal;
-  double twist = 0.0;
+  Vec3 new_normal, normal_sum;  // n', n + n'
+  double inverse_one_plus_cosine = 0.0, twist = 0.0;
+  KOKKOS_INLINE_FUNCTION ContactTurn(Vec3 old_normal, Vec3 normal, double turn_about_normal)
+      : new_normal(normal), normal_sum(old_normal + normal), twist(turn_about_normal) {
+    const double one_plus_cosine = 1.0 + dot(old_normal, normal);
+    // Normals half a turn apart have no least rotation: a contact never turns so far in a step.
+    inverse_one_plus_cosine = one_plus_cosine > 1e-12 ? 1.0 / one_plus_cosine : 0.0;
+  }
   KOKKOS_INLINE_FUNCTION Vec3 operator()(Vec3 shear) const {
-    return turn_with_contact(shear, old_normal, new_normal, twist);
+    const double length2 = dot(shear, shear);
+    if (!(length2 > 0.0)) return Vec3{};
+    Vec3 v = shear - (dot(shear, new_normal) * inverse_one_plus_cosine) * normal_sum;
+    v += twist * cross(new_normal, v);
+    v -= dot(v, new_normal) * new_normal;
+    const double after2 = dot(v, v);
+    return after2 > 0.0 ? sqrt(length2 / after2) * v : v;
   }
 };
+
+// A shear vector of the old contact frame carried into the new one (ContactTurn).
+KOKKOS_INLINE_FUNCTION Vec3 turn_with_contact(Vec3 shear, Vec3 old_normal, Vec3 new_normal, double twist) {
+  return ContactTurn(old_normal, new_normal, twist)(shear);
+}
 
 }  // namespace vrut

@@ -565,6 +565,13 @@ class Simulation {
           for (int k = 0; k < count(i); ++k) {
             const int j = partner(i, k);
             const vector d = box.separation(ps.position(i), ps.position(j));
+            // In 3D a pair apart is found without a square root (most listed pairs are).
+            if (is_3d<Dim> && dot(d, d) >= (ps.radius(i) + ps.radius(j)) * (ps.radius(i) + ps.radius(j)) &&
+                !is_bonded<Law>(state(i, k))) {
+              state(i, k) = typename Law::state_type{};
+              load(i, k) = ContactLoadIn<Dim>{};
+              continue;
+            }
             const double dist = norm(d);
             ContactGeometryIn<Dim> g;
             g.normal = (1.0 / dist) * d;
@@ -635,12 +642,15 @@ class Simulation {
     const Vec3 w_i = ps.angular_velocity(i), w_j = ps.angular_velocity(j);
     const Vec3 v_rel = (ps.velocity(j) + cross(w_j, -arm_j * g.normal)) - (ps.velocity(i) + cross(w_i, arm_i * g.normal));
     // The leapfrog moved the centres by dt v: a step ago they were d - dt (v_j - v_i) apart.
-    // The pair's mean spin about the step's mean normal (second order).
+    // The pair's mean spin about the step's mean normal (second order):
+    // |n + n'| = sqrt(2 (1 + n . n')).
     const Vec3 before = d - dt * (ps.velocity(j) - ps.velocity(i));
     const double before_length = norm(before);
     if (before_length > 0.0) {
       const Vec3 old_normal = (1.0 / before_length) * before, mid = old_normal + g.normal;
-      turn_history<Law>(s, ContactTurn{old_normal, g.normal, 0.5 * dt * dot(w_i + w_j, (1.0 / norm(mid)) * mid)});
+      const double mid_length = sqrt(2.0 * (1.0 + dot(old_normal, g.normal)));
+      const double twist = mid_length > 0.0 ? 0.5 * dt * dot(w_i + w_j, mid) / mid_length : 0.0;
+      turn_history<Law>(s, ContactTurn(old_normal, g.normal, twist));
     }
     const double along = dot(v_rel, g.normal);
     g.normal_increment = -along * dt;
@@ -694,6 +704,8 @@ class Simulation {
           WallMask holds = 0;
           for (int q = 0; q < swall_count(sp); ++q) {
             const int w = swalls(sp, q);
+            // In 3D, a cheap look first: most spheres are far from every plate.
+            if (is_3d<Dim> && !((held >> q) & 1u) && !reaches_wall(wall_view(w), ps.position(i), ps.radius(i))) continue;
             ContactGeometryIn<Dim> g;
             const double dist = wall_distance(wall_view(w), ps.position(i), g.normal);
             g.overlap = ps.radius(i) - dist;
@@ -719,6 +731,13 @@ class Simulation {
         });
   }
 
+  // Whether particle i (centre c, radius r) reaches wall w; in 2D the
+  // distance below decides alone.
+  KOKKOS_INLINE_FUNCTION static bool reaches_wall(const wall_type& w, vector c, double r) {
+    if constexpr (is_3d<Dim>) return reaches(w, c, r);
+    else return (void)w, (void)c, (void)r, true;
+  }
+
   // A wall's push on a particle: the force, and the lever whose negative is
   // its moment about the particle's centre.
   struct WallPush {
@@ -740,7 +759,7 @@ class Simulation {
       const Vec3 w = ps.angular_velocity(i);
       const Vec3 v_rel = ps.velocity(i) + cross(w, -arm * g.normal) - wall_velocity;
       // A plate does not turn: the frame turns only as the sphere spins about the normal.
-      turn_history<WallLaw>(s, ContactTurn{g.normal, g.normal, 0.5 * dt * dot(w, g.normal)});
+      turn_history<WallLaw>(s, ContactTurn(g.normal, g.normal, 0.5 * dt * dot(w, g.normal)));
       const double along = dot(v_rel, g.normal);
       g.normal_increment = -along * dt;
       g.shear_increment = dt * (v_rel - along * g.normal);
