@@ -440,6 +440,7 @@ int main(int argc, char** argv) {
             [&] { return session.any(stop_signal != 0); }, &*checkpoint);
       });
     } catch (const vrut::SimulationUnstable&) {
+      std::fprintf(stderr, "\n--timestep-safety sets the time-step safety (%g here)\n", num.timestep_safety);
       // The checkpoints before the blow-up stay, for a look at the state that led to it.
       if (fs::exists(checkpoint->path()))
         std::fprintf(stderr, "\nthe last checkpoint before it is kept in %s\n", checkpoint->path().c_str());

@@ -211,7 +211,7 @@ TEST_CASE("a disk outside its mould stops the run, saying where", "[rutting][ins
     CHECK_THROWS_WITH(vrut::check_inside_moulds(sim, specimens, 7, dt),
                       Catch::Contains("by loading step 7") && Catch::Contains("disk 5 of specimen 0") &&
                           Catch::Contains("outside its 40 x 20 mm mould") && Catch::Contains("0.3 of sqrt") &&
-                          Catch::Contains("--timestep-safety"));
+                          Catch::Contains("lower the time-step safety"));
     x(disk) = was;
     Kokkos::deep_copy(sim.particles().position, x);
   }

@@ -1,0 +1,371 @@
+#pragma once
+// The virtual wheel-tracking (rutting) test run, docs/method.md sections 1,
+// 5 and 6: specimen -> DE model with the four interactions -> mould (bottom
+// and side walls) -> settling under gravity -> a loading plate of contact
+// length l = m g / (p d) at mid-span, servo-controlled to the pressure p ->
+// loading for the cumulative time T = 60 min * l / travel, reduced by
+// alpha_T -> deformation curve, rut depth, dynamic stability. The test's
+// definition is rutting/test.hpp, its materials rutting/materials.hpp, what
+// it measures rutting/result.hpp.
+#include <vrut/core/simulation.hpp>
+#include <vrut/protocol/energy_check.hpp>
+#include <vrut/rutting/materials.hpp>
+#include <vrut/rutting/result.hpp>
+#include <vrut/rutting/test.hpp>
+#include <vrut/specimen/colouring.hpp>
+#include <vrut/specimen/specimen.hpp>
+#include <vrut/specimen/stone_reach.hpp>
+
+#include <Kokkos_Core.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace vrut {
+
+struct RuttingNumerics {
+  double shift = 1e4;                // alpha_T
+  double timestep_safety = 0.3;
+  // Local damping while loading. 0: the mastic's viscosity is the physical damping, and
+  // local damping would act as an extra dashpot that grows with alpha_T (docs/validation.md).
+  double damping = 0.0;
+  double settle_damping = 0.7;
+  long settle_steps = 4000;          // under gravity, before the plate comes down
+  double ramp_fraction = 0.02;       // of the loading time, for the plate force to rise
+  int samples = 240;                 // points of the deformation curve
+};
+
+// Throws SimulationUnstable when a disk has left its mould (through a wall or
+// over the top): a run with too large a time step can push disks through the
+// stiff walls without any single step jumping far enough for the engine's own
+// check. Called at every sample.
+template <class Sim>
+void check_inside_moulds(Sim& sim, const std::vector<Specimen>& specimens, long step, double dt) {
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  for (int e = 0; e < static_cast<int>(specimens.size()); ++e) {
+    const double w = specimens[e].width * 1e-3, h = specimens[e].height * 1e-3;
+    const double r = specimens[e].disks.radius * 1e-3;
+    const auto [first, last] = sim.specimen_range(e);
+    for (int i = first; i < last; ++i) {
+      const Vec2 p = x(i);
+      if (!(p.x > -r && p.x < w + r && p.y > -r && p.y < 2.0 * h)) {
+        char where[400];
+        std::snprintf(where, sizeof where, "disk %d of specimen %d (%.200s) is at (%.4g, %.4g) mm, outside its %g x %g mm mould",
+                      i - first, e, specimens[e].name.c_str(), p.x * 1e3, p.y * 1e3, w * 1e3, h * 1e3);
+        char text[700];
+        std::snprintf(text, sizeof text,
+                      "vrut: the rutting run became unstable by loading step %ld: %s. The time step is %.3g of "
+                      "sqrt(m_min / k_max); lower the time-step safety (RuttingNumerics::timestep_safety, 0.3 by default).",
+                      step, where, dt / sim.critical_timestep());
+        throw SimulationUnstable(text, step);
+      }
+    }
+  }
+}
+
+// The pairs of stones of specimen e that touch at the end, found in the
+// contact list (every overlapping disk pair is in it), and the stones.
+template <class Sim>
+std::pair<int, int> touching_stones(const Sim& sim, const Specimen& sp, int e) {
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().radius);
+  auto partner = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.contacts().partner);
+  auto count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.contacts().count);
+  const auto [first, last] = sim.specimen_range(e);
+  const std::vector<int>& stone = sp.disks.aggregate;
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<char> holds(sp.placement.aggregates.size(), 0);
+  for (int i = first; i < last; ++i) {
+    if (stone[i - first] >= 0) holds[stone[i - first]] = 1;
+    for (int k = 0; k < count(i); ++k) {
+      const int j = partner(i, k);
+      const int a = stone[i - first], b = stone[j - first];
+      if (a >= 0 && b >= 0 && a != b && norm(x(j) - x(i)) < r(i) + r(j)) pairs.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  const int distinct = static_cast<int>(std::unique(pairs.begin(), pairs.end()) - pairs.begin());
+  int stones = 0;
+  for (char h : holds) stones += h;
+  return {stones, distinct};
+}
+
+// Runs the test on every specimen of an ensemble side by side in one
+// Simulation: each kernel launch serves them all, and each specimen gets its
+// own mould and plate and exactly the result of its own single run (the time
+// step is the smallest any of them needs; with one disk radius it is the same
+// for all). progress(fraction of the loading time done, steps done). stop()
+// is asked at every sample: when it says true (Ctrl-C, say) the run ends
+// there, with the samples so far, a last snapshot, and `interrupted` set.
+//
+// Checkpoints (io/checkpoint.hpp has CheckpointFile): checkpoints->due() is
+// asked at every sample, and when it says true, or when the run is stopped,
+// checkpoints->save(visit) writes the state. When checkpoints->resuming(), the
+// run reads its state with checkpoints->load(visit) in place of settling and
+// goes on from there, with the same results as a run never stopped.
+struct NoCheckpoints {
+  bool resuming() const { return false; }
+  bool due() const { return false; }
+  template <class Visit> void save(Visit&&) {}
+  template <class Visit> void load(Visit&&) {}
+};
+
+template <class Space, class Checkpoints = NoCheckpoints>
+std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& specimens, const WheelTracking& wt,
+                                                const RuttingMaterials& mat, const RuttingNumerics& num,
+                                                const Space& space = Space(),
+                                                const std::function<void(double, long)>& progress = {},
+                                                const std::function<bool()>& stop = {},
+                                                Checkpoints* checkpoints = nullptr) {
+  const bool resuming = checkpoints != nullptr && checkpoints->resuming();
+  if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
+  if (!(num.timestep_safety > 0.0 && num.timestep_safety <= 1.0)) throw std::invalid_argument("time-step safety must lie in (0, 1]");
+  if (num.samples < 10) throw std::invalid_argument("at least 10 samples");
+  const int count = static_cast<int>(specimens.size());
+  for (const Specimen& sp : specimens) wt.validate(sp.width * 1e-3);
+  const double t = wt.wheel_width;
+  // Where stones meet through a film, each stone's disks get its colour's
+  // group; the margin (two disk diameters) covers how far neighbours close in.
+  std::vector<std::vector<int>> colours(count);
+  int stone_colours = 1;
+  const bool films = mat.films();
+  if (films)
+    for (int e = 0; e < count; ++e) {
+      colours[e] = colour_aggregates(specimens[e].placement, 4.0 * specimens[e].disks.radius);
+      for (int c : colours[e]) stone_colours = std::max(stone_colours, c + 1);
+    }
+  for (const Specimen& sp : specimens)
+    if (sp.disks.radius != specimens[0].disks.radius)
+      throw std::invalid_argument("an ensemble's specimens must share one disk size");
+  const auto table = rutting_table(mat, t, num.shift, stone_colours, 2e-3 * specimens[0].disks.radius);
+  SimulationSettings settings;
+  settings.thickness = t;
+  settings.gravity = {0.0, -wt.gravity};
+  CentralDifference::params_type integrator;
+  integrator.damping = num.settle_damping;
+  ParticleSet all;
+  std::vector<std::pair<int, int>> bonds;
+  for (int e = 0; e < count; ++e) {
+    const Specimen& sp = specimens[e];
+    const int offset = static_cast<int>(all.size());
+    ParticleSet set = to_particle_set(sp, mat.mastic_density, mat.aggregate_density);
+    if (films) set.group = rutting_groups(sp, mat, colours[e]);
+    if (mat.rigid_stones) set.body = stone_bodies(sp);
+    all.append_specimen(set);
+    for (const auto& [i, j] : sp.disks.bonds) bonds.emplace_back(i + offset, j + offset);
+  }
+  Simulation<RuttingLaw, Space, CentralDifference, LoadControl, RuttingWallLaw> sim(all, table, settings, integrator, space);
+  std::vector<RuttingResult> results(count);
+  sim.bond_pairs(bonds);
+  for (int e = 0; e < count; ++e) {
+    results[e].bonds = sim.intact_bonds(e);
+    results[e].particles = specimens[e].disks.centers.size();
+  }
+
+  // Each mould: bottom and both sides, linear and (by default) frictionless.
+  const auto wall_law = rutting_wall_params(mat, t);
+  const double k_wall = wall_law.normal.stiffness;
+  for (int e = 0; e < count; ++e) {
+    const double width = specimens[e].width * 1e-3, height = specimens[e].height * 1e-3;
+    sim.add_wall(Wall{{0.0, 0.0}, {width, 0.0}, {}}, wall_law, {}, e);
+    sim.add_wall(Wall{{0.0, 2.0 * height}, {0.0, 0.0}, {}}, wall_law, {}, e);
+    sim.add_wall(Wall{{width, 0.0}, {width, 2.0 * height}, {}}, wall_law, {}, e);
+  }
+  const double dt = num.timestep_safety * sim.critical_timestep();
+
+  // Settling under gravity (a resumed run reads where it had got to instead).
+  // The energy check (energy_check.hpp) counts the loads' work from here.
+  auto energy_reference = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  std::vector<double> plate_work(count, 0.0);
+  constexpr long energy_check_every = 500;  // settling steps
+  for (long done_settling = 0; !resuming && done_settling < num.settle_steps; done_settling += energy_check_every) {
+    sim.run(std::min(energy_check_every, num.settle_steps - done_settling), dt);
+    check_energy(sim, energy_reference, {}, sim.steps(), dt);
+  }
+
+  // The plates, each on the highest disk under it; the load brings it down.
+  const double l = wt.contact_length();
+  const double t_load = wt.loading_time() / num.shift;
+  const long steps = static_cast<long>(std::ceil(t_load / dt));
+  const long ramp_steps = std::max(1L, static_cast<long>(num.ramp_fraction * steps));
+  auto host_x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  std::vector<double> top(count, 0.0);
+  std::vector<int> plate(count);
+  std::vector<double> plate_mass(count);
+  for (int e = 0; e < count; ++e) {
+    RuttingResult& res = results[e];
+    res.dt = dt;
+    const double width = specimens[e].width * 1e-3;
+    res.plate_x0 = 0.5 * (width - l);
+    res.plate_x1 = 0.5 * (width + l);
+    const double r = specimens[e].disks.radius * 1e-3;
+    const auto [first, last] = sim.specimen_range(e);
+    for (int i = first; i < last; ++i)
+      if (host_x(i).x + r > res.plate_x0 && host_x(i).x - r < res.plate_x1) top[e] = std::max(top[e], host_x(i).y + r);
+    // The plate is loaded like the wheel itself: a dead load. A PFC servo
+    // (ServoControl) sets its speed from the stiffness of the wall contacts; on
+    // a flowing mastic under stiff aggregate contacts it lags far behind the
+    // target (docs/rutting.md), while the dead load holds the pressure.
+    // Its mass is numerical: ten times the least that keeps the plate stable on
+    // stiff contacts with every disk under it (k N dt^2 / 4), so that its
+    // inertia hardly shows in the measured pressure.
+    plate_mass[e] = 10.0 * k_wall * (l / (2.0 * r)) * dt * dt / 4.0;
+    plate[e] = sim.add_wall(Wall{{res.plate_x1, top[e]}, {res.plate_x0, top[e]}, {}}, wall_law,
+                            LoadControl::for_stress(0.0, l, t, plate_mass[e], 0.0), e);
+  }
+  auto ramp_to = [&](double fraction) {
+    const double stress = wt.plate_force() * fraction / (l * t);
+    for (int e = 0; e < count; ++e)
+      sim.set_controller(plate[e], LoadControl::for_stress(stress, l, t, plate_mass[e], 0.0));
+  };
+  CentralDifference::params_type loading;
+  loading.damping = num.damping;
+  sim.set_integrator(loading);
+
+  Kokkos::View<Vec2*, typename Space::memory_space> start("loading_start", all.size());
+  Kokkos::deep_copy(start, sim.particles().position);
+  auto snapshot = [&](double fraction) {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+    auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), start);
+    for (int e = 0; e < count; ++e) {
+      RuttingSnapshot s;
+      s.fraction = fraction;
+      const auto [first, last] = sim.specimen_range(e);
+      for (int i = first; i < last; ++i) {
+        s.x.push_back(x(i).x);
+        s.y.push_back(x(i).y);
+        s.dx.push_back(x(i).x - x0(i).x);
+        s.dy.push_back(x(i).y - x0(i).y);
+      }
+      results[e].snapshots.push_back(std::move(s));
+    }
+  };
+
+  const double to_minutes = wt.minutes / t_load;
+  const auto begin = std::chrono::steady_clock::now();
+  int next_sample = 1, next_snapshot = 1;
+  std::vector<Vec2> last_impulse(count), last_plate_position(count);
+  for (int e = 0; e < count; ++e) last_plate_position[e] = sim.wall(plate[e]).start;
+  double last_time = 0.0, seconds_before = 0.0, checkpoint_seconds = 0.0;  // wall time of the run before this process
+  long done = steps, last_done = 0;
+  // The whole state of the run between two steps, item by item (Simulation::visit_state).
+  auto visit = [&](auto& archive) {
+    sim.visit_state(archive);
+    archive.view("loading_start", start);
+    archive.value("loading_steps_done", last_done);
+    archive.value("next_sample", next_sample);
+    archive.value("next_snapshot", next_snapshot);
+    archive.value("last_sample_time", last_time);
+    archive.vector("last_plate_impulse", last_impulse);
+    archive.vector("plate_start_height", top);
+    archive.view("energy_reference", energy_reference);
+    archive.vector("plate_work", plate_work);
+    archive.vector("last_plate_position", last_plate_position);
+    checkpoint_seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    archive.value("wall_seconds", checkpoint_seconds);
+    for (int e = 0; e < count; ++e) {
+      const std::string id = "specimen_" + std::to_string(e) + "_";
+      archive.vector(id + "samples", results[e].samples);
+      int shots = static_cast<int>(results[e].snapshots.size());
+      archive.value(id + "snapshots", shots);
+      results[e].snapshots.resize(shots);
+      for (int k = 0; k < shots; ++k) {
+        RuttingSnapshot& shot = results[e].snapshots[k];
+        const std::string sid = id + "snapshot_" + std::to_string(k) + "_";
+        archive.value(sid + "fraction", shot.fraction);
+        archive.vector(sid + "x", shot.x);
+        archive.vector(sid + "y", shot.y);
+        archive.vector(sid + "dx", shot.dx);
+        archive.vector(sid + "dy", shot.dy);
+      }
+    }
+  };
+  if (resuming) {
+    checkpoints->load(visit);
+    seconds_before = checkpoint_seconds;
+  }
+  for (long s = last_done + 1; s <= steps; ++s) {
+    if (s <= ramp_steps && (s % 50 == 1 || s == ramp_steps))
+      ramp_to(std::min(1.0, static_cast<double>(s) / ramp_steps));
+    sim.step(dt);
+    const double time = s * dt;
+    if (next_snapshot <= 3 && (s >= steps * next_snapshot / 3)) {
+      snapshot(next_snapshot / 3.0);
+      ++next_snapshot;
+    }
+    if (next_sample <= num.samples && (time >= t_load * next_sample / num.samples - 0.5 * dt || s == steps)) {
+      check_inside_moulds(sim, specimens, s, dt);
+      const std::vector<Wall>& walls = sim.all_walls();
+      const std::vector<Vec2> impulse = sim.all_wall_impulses();
+      for (int e = 0; e < count; ++e) {
+        const Wall& w = walls[plate[e]];
+        RuttingSample smp;
+        smp.reduced_time = time;
+        smp.minutes = time * to_minutes;
+        smp.deformation = top[e] - w.start.y;
+        // Mean pressure since the last sample, from the impulse on the plate.
+        smp.plate_pressure = -dot(impulse[plate[e]] - last_impulse[e], inward_normal(w)) / (time - last_time) / (l * t);
+        // The plate's work on the disks: its mean force on them times its travel.
+        plate_work[e] -= dot(impulse[plate[e]] - last_impulse[e], w.start - last_plate_position[e]) / (time - last_time);
+        last_plate_position[e] = w.start;
+        last_impulse[e] = impulse[plate[e]];
+        results[e].samples.push_back(smp);
+      }
+      check_energy(sim, energy_reference, plate_work, s, dt);
+      last_time = time;
+      ++next_sample;
+      if (progress) progress(time / t_load, s);
+      const bool stopping = stop && s < steps && stop();
+      if (checkpoints != nullptr && s < steps && (stopping || checkpoints->due())) {
+        last_done = s;
+        checkpoints->save(visit);
+      }
+      if (stopping) {
+        done = s;
+        if (next_snapshot <= 3) snapshot(time / t_load);
+        for (auto& r : results) r.interrupted = true;
+        break;
+      }
+    }
+  }
+  Kokkos::fence();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  const std::vector<Wall>& walls = sim.all_walls();
+  auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().velocity);
+  auto g = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().group);
+  for (int e = 0; e < count; ++e) {
+    RuttingResult& res = results[e];
+    res.wall_seconds = seconds_before + seconds;
+    res.steps = done;
+    res.contacts = sim.active_contacts(e);
+    std::tie(res.stones, res.stone_pairs_touching) = touching_stones(sim, specimens[e], e);
+    res.plate_y_final = walls[plate[e]].start.y;
+    const auto [first, last] = sim.specimen_range(e);
+    for (int i = first; i < last; ++i) {
+      res.vx.push_back(v(i).x);
+      res.vy.push_back(v(i).y);
+      res.group.push_back(g(i) == mastic_group ? mastic_group : aggregate_group);  // colours are stones
+    }
+    finish_deformation(res, wt);
+  }
+  return results;
+}
+
+template <class Space, class Checkpoints = NoCheckpoints>
+RuttingResult run_rutting(const Specimen& sp, const WheelTracking& wt, const RuttingMaterials& mat,
+                          const RuttingNumerics& num, const Space& space = Space(),
+                          const std::function<void(double, long)>& progress = {},
+                          const std::function<bool()>& stop = {}, Checkpoints* checkpoints = nullptr) {
+  return run_rutting_ensemble(std::vector<Specimen>{sp}, wt, mat, num, space, progress, stop, checkpoints).front();
+}
+
+}  // namespace vrut
