@@ -1,0 +1,184 @@
+#pragma once
+// vrut-rutting's options: every option of a run, the command line that sets
+// them, and the options of a run resumed from its checkpoint.
+#include "../common/cli.hpp"
+#include "../common/image_cli.hpp"
+#include "../common/seeds.hpp"
+#include "../common/specimen_cli.hpp"
+
+#include <vrut/backend.hpp>
+#include <vrut/io/checkpoint.hpp>
+#include <vrut/protocol/rutting.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+// Every option of a run: parsed from the command line, or on --resume from
+// the arguments the checkpoint stored.
+struct RunOptions {
+  specimen_cli::SpecimenOptions so;
+  image_cli::ImageOptions io;
+  bool width_given = false, voids_given = false, seed_given = false;  // for --image: what was typed
+  vrut::WheelTracking wt;
+  vrut::RuttingMaterials mat;
+  vrut::RuttingNumerics num;
+  std::string backend = "openmp", out = "out/rutting", conversion = "seed", stone_film = "per-contact", seeds_text;
+  int threads = 0;
+  bool force = false, exact_stones = false;
+  double checkpoint_every = 0.0;
+  double e1 = 0, eta1 = 0, e2 = 0, eta2 = 0, pressure_mpa = 0, wheel_width_mm = 0, travel_mm = 0, aggregate_gpa = 0;
+
+  RunOptions() {
+    so.disk_radius_mm = 1.0;  // the rutting default: a full test in minutes on 2 cores (docs/rutting.md)
+    e1 = mat.mastic.E1 * 1e-6, eta1 = mat.mastic.eta1 * 1e-6, e2 = mat.mastic.E2 * 1e-6, eta2 = mat.mastic.eta2 * 1e-6;
+    pressure_mpa = wt.pressure * 1e-6, wheel_width_mm = wt.wheel_width * 1e3, travel_mm = wt.travel * 1e3;
+    aggregate_gpa = mat.aggregate_modulus * 1e-9;
+  }
+  // The model in SI units, from the options as typed.
+  void convert() {
+    mat.mastic = {e1 * 1e6, eta1 * 1e6, e2 * 1e6, eta2 * 1e6};
+    mat.calibrated_conversion = conversion == "calibrated";
+    mat.stone_film = stone_film == "none" ? vrut::StoneFilm::none
+                     : stone_film == "mean" ? vrut::StoneFilm::mean
+                                            : vrut::StoneFilm::per_contact;
+    mat.aggregate_modulus = aggregate_gpa * 1e9;
+    mat.rigid_stones = !exact_stones;
+    wt.pressure = pressure_mpa * 1e6;
+    wt.wheel_width = wheel_width_mm * 1e-3;
+    wt.travel = travel_mm * 1e-3;
+  }
+};
+
+// Options that a resumed run may change: where and how fast it runs, not what.
+const std::vector<std::string> resumable_options = {"--backend", "--threads", "--checkpoint-every"};
+
+void add_run_options(CLI::App& app, RunOptions& o) {
+  using namespace specimen_cli;
+  auto& mat = o.mat;
+  auto& wt = o.wt;
+  auto& num = o.num;
+  app.set_config("--config", "", "read options from this file (INI/TOML, as written to DIR/config.ini)");
+  app.allow_config_extras(false);  // an unknown key in a config file is an error
+  add_specimen_options(app, o.so);
+  image_cli::add_image_options(app, o.io, true);
+  app.add_option("--seeds", o.seeds_text,
+                 "an ensemble: specimens of these seeds, run side by side, e.g. 1-16 or 1,4,9 (instead of --seed)");
+  app.add_option("--E1", o.e1, "mastic Maxwell modulus at 60 C, MPa")->check(cli::finite_positive())->capture_default_str()->group("Materials");
+  app.add_option("--eta1", o.eta1, "mastic Maxwell viscosity, MPa s")->check(cli::finite_positive())->capture_default_str()->group("Materials");
+  app.add_option("--E2", o.e2, "mastic Kelvin modulus, MPa")->check(cli::finite_positive())->capture_default_str()->group("Materials");
+  app.add_option("--eta2", o.eta2, "mastic Kelvin viscosity, MPa s")->check(cli::finite_positive())->capture_default_str()->group("Materials");
+  app.add_option("--mastic-nu", mat.mastic_nu, "Poisson's ratio of the mastic")->check(cli::finite_range(0.0, 0.5, true))
+      ->capture_default_str()->group("Materials");
+  app.add_option("--conversion", o.conversion, "micro parameters: seed (method.md rules) or calibrated (docs/burgers.md)")
+      ->check(CLI::IsMember({"seed", "calibrated"}))->capture_default_str()->group("Materials");
+  app.add_option("--mastic-aggregate-factor", mat.mastic_aggregate_factor,
+                 "mastic-aggregate contacts get this times the mastic-mastic values")
+      ->check(cli::finite_positive())->capture_default_str()->group("Materials");
+  app.add_option("--aggregate-modulus-gpa", o.aggregate_gpa, "aggregate Young's modulus (the stone springs 2 t E of --exact-stones)")->check(cli::finite_positive())
+      ->capture_default_str()->group("Materials");
+  app.add_option("--aggregate-nu", mat.aggregate_nu, "aggregate Poisson's ratio")->check(cli::finite_range(0.0, 0.5, true))
+      ->capture_default_str()->group("Materials");
+  app.add_option("--mastic-density", mat.mastic_density, "kg/m^3")->check(cli::finite_positive())->capture_default_str()
+      ->group("Materials");
+  app.add_option("--aggregate-density", mat.aggregate_density, "kg/m^3")->check(cli::finite_positive())
+      ->capture_default_str()->group("Materials");
+  app.add_option("--friction", mat.friction, "disk-disk friction where no bond holds")->check(cli::finite_range(0.0, 10.0))
+      ->capture_default_str()->group("Materials");
+  app.add_option("--stone-friction", mat.stone_friction,
+                 "aggregate-aggregate friction where no bond holds (-1: the same as --friction)")
+      ->check(cli::finite_range(-1.0, 10.0))->capture_default_str()->group("Materials");
+  app.add_option("--stone-film", o.stone_film,
+                 "how two stones meet: per-contact (each pair through its own mastic film, sized from where its disks "
+                 "lie inside the stones' outlines, then the stone law once it squeezes out), mean (one film of "
+                 "--film-gap for every pair), none (method.md's stone law alone, the model before 2026-12-02)")
+      ->check(CLI::IsMember({"per-contact", "mean", "none"}))->capture_default_str()->group("Materials");
+  app.add_option("--film-gap", mat.film_gap,
+                 "--stone-film mean: the film's thickness, in disk diameters (0.40: the mean gap between two stones' "
+                 "outlines in 2# where their disks are neighbours)")
+      ->check(cli::finite_range(0.01, 0.99))->capture_default_str()->group("Materials");
+  app.add_flag("--film-endless", mat.film_endless,
+               "--stone-film mean: the film never squeezes out, the stones never bear (refused with the others)")
+      ->group("Materials");  // no CLI excludes: config.ini holds every option, and reads back
+  app.add_flag("--exact-stones", o.exact_stones,
+               "the method's stones: bonded disks on the stone's 2 t E springs, walls as stiff, and the time step "
+               "from them (the default: rigid stones on --stone-contact-ratio times the mastic's spring, damped)")
+      ->group("Numerics");
+  app.add_option("--stone-contact-ratio", mat.stone_contact_ratio,
+                 "rigid stones: the stone-stone and wall spring over the mastic's E1 t")
+      ->check(cli::finite_positive())->capture_default_str()->group("Numerics");
+  app.add_option("--stone-damping", mat.stone_damping,
+                 "rigid stones: the stone-stone and wall dashpot, a fraction of critical damping")
+      ->check(cli::finite_range(0.0, 0.99))->capture_default_str()->group("Numerics");
+  app.add_option("--wall-friction", mat.wall_friction, "mould and plate friction")->check(cli::finite_range(0.0, 10.0))
+      ->capture_default_str()->group("Materials");
+  app.add_option("--pressure-mpa", o.pressure_mpa, "wheel contact pressure p")->check(cli::finite_positive())
+      ->capture_default_str()->group("Loading");
+  app.add_option("--wheel-mass-kg", wt.wheel_mass, "wheel mass m")->check(cli::finite_positive())->capture_default_str()->group("Loading");
+  app.add_option("--wheel-width-mm", o.wheel_width_mm, "wheel width d (= disk thickness t)")
+      ->check(cli::finite_positive())->capture_default_str()
+      ->group("Loading");
+  app.add_option("--travel-mm", o.travel_mm, "wheel travel")->check(cli::finite_positive())->capture_default_str()->group("Loading");
+  app.add_option("--passes-per-minute", wt.passes_per_minute, "N")->check(cli::finite_positive())->capture_default_str()->group("Loading");
+  app.add_option("--minutes", wt.minutes, "test duration (more than the DS window's start, 45)")
+      ->check(cli::finite_positive())->capture_default_str()->group("Loading");
+  app.add_option("--shift", num.shift, "time-temperature shift factor alpha_T")->capture_default_str()->group("Numerics");
+  app.add_option("--timestep-safety", num.timestep_safety, "fraction of the critical time step")
+      ->check(cli::finite_range(1e-3, 1.0))->capture_default_str()->group("Numerics");
+  app.add_option("--damping", num.damping, "local damping while loading")->check(cli::finite_range(0.0, 0.99))
+      ->capture_default_str()->group("Numerics");
+  app.add_option("--settle-steps", num.settle_steps, "steps of settling under gravity")
+      ->check(CLI::Range(0L, 100000000L))->capture_default_str()->group("Numerics");
+  app.add_option("--samples", num.samples, "points of the deformation curve")->check(CLI::Range(10, 100000))
+      ->capture_default_str()->group("Numerics");
+  app.add_option("--backend", o.backend, "Kokkos backend")->check(CLI::IsMember(vrut::available_backends()))
+      ->capture_default_str()->group("Numerics");
+  app.add_option("--threads", o.threads, "host threads (0: OMP_NUM_THREADS)")->check(CLI::Range(0, 1024))
+      ->capture_default_str()->group("Numerics");
+  app.add_option("--checkpoint-every", o.checkpoint_every,
+                 "write DIR/checkpoint.vrut every this many seconds (0: only on Ctrl-C); resume with --resume DIR")
+      ->check(cli::finite_range(0.0, 1e9))->capture_default_str()->group("Runs");
+  app.add_option("--out", o.out, "output folder")->capture_default_str()->group("Runs");
+  app.add_flag("--force", o.force, "overwrite an existing output folder")->group("Runs");
+}
+
+// The checkpoint's options, parsed as they were, with the resumable ones
+// taken from this command line. A run whose --config file has changed since
+// is refused: it would not be the same run.
+RunOptions options_to_resume(const CLI::App& command_line, const RunOptions& given, const vrut::CheckpointFile& file) {
+  for (const CLI::Option* opt : command_line.get_options())
+    if (opt->count() > 0 && opt->get_name() != "--resume" &&
+        std::find(resumable_options.begin(), resumable_options.end(), opt->get_name()) == resumable_options.end())
+      throw std::invalid_argument("--resume takes every option from the checkpoint; only --backend, --threads and "
+                                  "--checkpoint-every may be given with it, not " + opt->get_name());
+  RunOptions o;
+  CLI::App stored;
+  add_run_options(stored, o);
+  auto args = file.header().at("argv").get<std::vector<std::string>>();
+  std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+  try {
+    stored.parse(args);
+  } catch (const CLI::ParseError& e) {
+    throw std::invalid_argument("the options stored in " + file.path().string() + " no longer parse: " + e.what());
+  }
+  if (stored.config_to_str(true, false) != file.header().at("config").get<std::string>())
+    throw std::invalid_argument("the options of " + file.path().string() +
+                                " read differently now (has its --config file changed?): it cannot be resumed");
+  for (const std::string& name : resumable_options)
+    if (command_line.count(name) > 0) {
+      if (name == "--backend") o.backend = given.backend;
+      if (name == "--threads") o.threads = given.threads;
+      if (name == "--checkpoint-every") o.checkpoint_every = given.checkpoint_every;
+    }
+  o.io.images = image_cli::given_images(o.io);
+  o.width_given = stored.count("--width-mm") > 0;
+  o.voids_given = stored.count("--air-voids") > 0;
+  o.seed_given = stored.count("--seed") > 0;
+  o.force = true;  // the folder is this run's own
+  return o;
+}
+
+}  // namespace
