@@ -9,6 +9,7 @@
 #include <vrut/contact/geometry.hpp>
 #include <vrut/contact/geometry3.hpp>
 #include <vrut/contact/linear.hpp>
+#include <vrut/control/velocity.hpp>
 #include <vrut/core/assignment.hpp>
 #include <vrut/core/contact_list.hpp>
 #include <vrut/data/particle_set.hpp>

@@ -5,7 +5,9 @@
 //   Law          contact law between particles (contact/concept.hpp)
 //   Space        Kokkos execution space the kernels run in
 //   Integrator   time integration policy (integrate/central_difference.hpp)
-//   Controller   wall controller policy (servo/servo.hpp)
+//   Controller   wall controller policy: by default VelocityControl (walls keep
+//                the velocity they are given; control/velocity.hpp), or a
+//                servo or dead load (servo/servo.hpp)
 //   WallLaw      contact law between particles and walls
 //   Dim          Dim2 (disks of thickness t, segment walls) or Dim3 (spheres,
 //                rectangular plates, periodic axes); data/dimension.hpp.
@@ -36,6 +38,7 @@
 #include <vrut/contact/composite.hpp>
 #include <vrut/contact/concept.hpp>
 #include <vrut/contact/geometry3.hpp>
+#include <vrut/control/velocity.hpp>
 #include <vrut/core/assignment.hpp>
 #include <vrut/core/contact_list.hpp>
 #include <vrut/data/bodies.hpp>
@@ -47,7 +50,6 @@
 #include <vrut/geometry/clump3.hpp>
 #include <vrut/integrate/central_difference.hpp>
 #include <vrut/neighbor/periodic_box3.hpp>
-#include <vrut/servo/servo.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -84,7 +86,7 @@ struct SimulationSettingsIn {
 using SimulationSettings = SimulationSettingsIn<Dim2>;
 
 template <class LawSpec, class Space = Kokkos::DefaultExecutionSpace, class Integrator = CentralDifference,
-          class Controller = ServoControl, class WallLawSpec = Linear, class Dim = Dim2>
+          class Controller = VelocityControl, class WallLawSpec = Linear, class Dim = Dim2>
 class Simulation {
  public:
   using dimension = Dim;
@@ -1075,7 +1077,7 @@ class Simulation {
 
 // The engine in 3D: spheres, rectangular plates (Wall3), periodic axes.
 template <class Law, class Space = Kokkos::DefaultExecutionSpace, class Integrator = CentralDifference,
-          class Controller = ServoControl, class WallLaw = Linear>
+          class Controller = VelocityControl, class WallLaw = Linear>
 using Simulation3 = Simulation<Law, Space, Integrator, Controller, WallLaw, Dim3>;
 using SimulationSettings3 = SimulationSettingsIn<Dim3>;
 

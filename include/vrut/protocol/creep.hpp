@@ -9,6 +9,7 @@
 #include <vrut/data/particle_set.hpp>
 #include <vrut/core/simulation.hpp>
 #include <vrut/material/burgers_parameters.hpp>
+#include <vrut/servo/servo.hpp>
 
 #include <Kokkos_Core.hpp>
 

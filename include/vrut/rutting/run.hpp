@@ -12,6 +12,7 @@
 #include <vrut/rutting/materials.hpp>
 #include <vrut/rutting/result.hpp>
 #include <vrut/rutting/test.hpp>
+#include <vrut/servo/servo.hpp>
 #include <vrut/specimen/colouring.hpp>
 #include <vrut/specimen/specimen.hpp>
 #include <vrut/specimen/stone_reach.hpp>

@@ -1,8 +1,10 @@
 #pragma once
 // Wall controllers: policies that set a wall's velocity once per step from
-// the load the particles put on it. They act on a 2D segment (Wall) or a 3D
+// the load the particles put on it (control/velocity.hpp has the engine's
+// default, which leaves it as it is). They act on a 2D segment (Wall) or a 3D
 // plate (Wall3) alike: along its inward normal.
 #include <vrut/contact/geometry.hpp>
+#include <vrut/control/velocity.hpp>
 #include <vrut/data/walls.hpp>
 #include <vrut/data/walls3.hpp>
 #include <vrut/integrate/central_difference.hpp>
@@ -10,14 +12,6 @@
 #include <Kokkos_Core.hpp>
 
 namespace vrut {
-
-// Leaves every wall at the velocity it was given (velocity control).
-struct VelocityControl {
-  struct params_type {};
-  struct state_type {};
-  template <class W, class Load>
-  KOKKOS_INLINE_FUNCTION static void control(const params_type&, state_type&, W&, const Load&, double) {}
-};
 
 // PFC-style servo with integral action: moves the wall along its inward
 // normal to bring the normal force the disks exert on it to a target. With
