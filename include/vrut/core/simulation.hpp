@@ -675,6 +675,7 @@ class Simulation {
     auto rcount = contacts_.reverse_count;
     const int cap = contacts_.capacity;
     auto wall_view = walls_;
+    auto wnormal = wall_normal_;
     auto wparams = wall_params_;
     auto wstate = wall_state_;
     auto wload = wall_load_;
@@ -707,7 +708,9 @@ class Simulation {
           for (int q = 0; q < swall_count(sp); ++q) {
             const int w = swalls(sp, q);
             // In 3D, a cheap look first: most spheres are far from every plate.
-            if (is_3d<Dim> && !((held >> q) & 1u) && !reaches_wall(wall_view(w), ps.position(i), ps.radius(i))) continue;
+            if (is_3d<Dim> && !((held >> q) & 1u) &&
+                !reaches_wall(wall_view(w), wnormal(w), ps.position(i), ps.radius(i)))
+              continue;
             ContactGeometryIn<Dim> g;
             const double dist = wall_distance(wall_view(w), ps.position(i), g.normal);
             g.overlap = ps.radius(i) - dist;
@@ -733,11 +736,17 @@ class Simulation {
         });
   }
 
-  // Whether particle i (centre c, radius r) reaches wall w; in 2D the
-  // distance below decides alone.
-  KOKKOS_INLINE_FUNCTION static bool reaches_wall(const wall_type& w, vector c, double r) {
-    if constexpr (is_3d<Dim>) return reaches(w, c, r);
-    else return (void)w, (void)c, (void)r, true;
+  // Whether a particle (centre c, radius r) reaches wall w, of inward unit
+  // normal n; in 2D the distance below decides alone. In 3D a sphere farther
+  // from the plate's plane than r cannot reach it (one dot product), and
+  // only one nearer is measured against the plate's edges.
+  KOKKOS_INLINE_FUNCTION static bool reaches_wall(const wall_type& w, vector n, vector c, double r) {
+    if constexpr (is_3d<Dim>) {
+      const double height = dot(c - w.centre, n);
+      return height < r && height > -r && reaches(w, c, r);
+    } else {
+      return (void)w, (void)n, (void)c, (void)r, true;
+    }
   }
 
   // A wall's push on a particle: the force, and the lever whose negative is
@@ -902,6 +911,7 @@ class Simulation {
       Kokkos::deep_copy(specimen_wall_count_, hc);
     }
     walls_ = Kokkos::View<wall_type*, memory_space>("walls", nwalls);
+    wall_normal_ = Kokkos::View<vector*, memory_space>("wall_normal", nwalls);
     wall_params_ = Kokkos::View<wall_params_type*, memory_space>("wall_params", nwalls);
     control_ = Kokkos::View<controller_params*, memory_space>("wall_control", nwalls);
     Kokkos::View<controller_state*, memory_space> control_state("wall_control_state", nwalls);
@@ -1025,6 +1035,11 @@ class Simulation {
 
   void push_walls() {
     const int nwalls = walls();
+    // A wall's normal: walls translate (move_walls) but never turn, so it
+    // stays as it is computed here.
+    auto hn = Kokkos::create_mirror_view(wall_normal_);
+    for (int w = 0; w < nwalls; ++w) hn(w) = inward_normal(walls_host_[w]);
+    Kokkos::deep_copy(wall_normal_, hn);
     auto hw = Kokkos::create_mirror_view(walls_);
     auto hp = Kokkos::create_mirror_view(wall_params_);
     auto hc = Kokkos::create_mirror_view(control_);
@@ -1062,6 +1077,7 @@ class Simulation {
   Kokkos::View<int*, memory_space> specimen_begin_, wall_specimen_, wall_slot_, specimen_wall_count_;
   Kokkos::View<int**, memory_space> specimen_walls_;
   Kokkos::View<wall_type*, memory_space> walls_;
+  Kokkos::View<vector*, memory_space> wall_normal_;  // inward, unit
   Kokkos::View<wall_params_type*, memory_space> wall_params_;
   Kokkos::View<controller_params*, memory_space> control_;
   Kokkos::View<controller_state*, memory_space> control_state_;
