@@ -50,7 +50,9 @@ struct BurgersHistoryOf {
 };
 using BurgersHistory = BurgersHistoryOf<double>;
 
-template <class T> struct same_type { using type = T; };
+namespace detail {
+template <class T> struct same_type { using type = T; };  // keeps du out of Value's deduction
+}  // namespace detail
 
 // The coefficients of burgers_step for time step dt, the same operations in
 // the same order, so a prepared element gives the same bits as one that is not.
@@ -69,7 +71,7 @@ KOKKOS_INLINE_FUNCTION void burgers_prepare(BurgersElement& e, double dt) {
 // (positive loads it), returns the new force.
 template <class Value>
 KOKKOS_INLINE_FUNCTION Value burgers_step(const BurgersElement& e, BurgersHistoryOf<Value>& h,
-                                          typename same_type<Value>::type du, double dt) {
+                                          typename detail::same_type<Value>::type du, double dt) {
   BurgersElement k = e;
   if (e.prepared_dt != dt) burgers_prepare(k, dt);
   const Value f = (du + k.kelvin_release * h.kelvin - k.c * h.force) / k.d;

@@ -175,7 +175,7 @@ class ContactList {
         KOKKOS_LAMBDA(const int i) {
           const int ix = cell_index(component(x(i), 0), ox, wx, cx, px);
           const int iy = cell_index(component(x(i), 1), oy, wy, cy, py);
-          const int iz = dims == 3 ? cell_index(component(x(i), dims - 1), oz, wz, cz, pz) : 0;
+          const int iz = dims == 3 ? cell_index(component(x(i), 2), oz, wz, cz, pz) : 0;
           cof(i) = ((specimen(i) * cz + iz) * cy + iy) * cx + ix;
           Kokkos::atomic_add(&start(cof(i) + 1), 1);  // atomic_increment is deprecated in Kokkos 4
         });

@@ -736,14 +736,14 @@ class Simulation {
         });
   }
 
-  // Whether a particle (centre c, radius r) reaches wall w, of inward unit
-  // normal n; in 2D the distance below decides alone. In 3D a sphere farther
-  // from the plate's plane than r cannot reach it (one dot product), and
-  // only one nearer is measured against the plate's edges.
+  // Whether a particle (centre c, radius r) may reach wall w, of inward
+  // unit normal n; in 2D the distance below decides alone. In 3D a sphere
+  // farther from the plate's plane than r cannot reach it (one dot
+  // product); for one nearer, wall_distance measures the plate's edges too.
   KOKKOS_INLINE_FUNCTION static bool reaches_wall(const wall_type& w, vector n, vector c, double r) {
     if constexpr (is_3d<Dim>) {
       const double height = dot(c - w.centre, n);
-      return height < r && height > -r && reaches(w, c, r);
+      return height < r && height > -r;
     } else {
       return (void)w, (void)n, (void)c, (void)r, true;
     }

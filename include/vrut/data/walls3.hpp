@@ -31,23 +31,12 @@ KOKKOS_INLINE_FUNCTION void translate(Wall3& w, Vec3 d) { w.centre += d; }
 // Returns the distance. A centre exactly on the plate gets the inward
 // normal. With orthogonal half-edges, the closest point's coordinates along
 // them are the centre's own, clamped to the plate.
-// The vector from the plate's closest point to c.
-KOKKOS_INLINE_FUNCTION Vec3 from_closest_point(const Wall3& w, Vec3 c) {
+KOKKOS_INLINE_FUNCTION double wall_distance(const Wall3& w, Vec3 c, Vec3& normal) {
   const Vec3 r0 = c - w.centre;
   double a = dot(r0, w.half_u) / dot(w.half_u, w.half_u), b = dot(r0, w.half_v) / dot(w.half_v, w.half_v);
   a = a < -1.0 ? -1.0 : (a > 1.0 ? 1.0 : a);
   b = b < -1.0 ? -1.0 : (b > 1.0 ? 1.0 : b);
-  return r0 - a * w.half_u - b * w.half_v;
-}
-
-// Whether a sphere of radius r at c reaches the plate (no square root).
-KOKKOS_INLINE_FUNCTION bool reaches(const Wall3& w, Vec3 c, double r) {
-  const Vec3 d = from_closest_point(w, c);
-  return dot(d, d) < r * r;
-}
-
-KOKKOS_INLINE_FUNCTION double wall_distance(const Wall3& w, Vec3 c, Vec3& normal) {
-  const Vec3 r = from_closest_point(w, c);
+  const Vec3 r = r0 - a * w.half_u - b * w.half_v;
   const double dist = norm(r);
   normal = dist > 0.0 ? (1.0 / dist) * r : inward_normal(w);
   return dist;
