@@ -6,6 +6,7 @@
 #include "pile3.hpp"
 #include "spaces.hpp"
 
+#include <vrut/material/burgers_parameters.hpp>
 #include <vrut/vrut.hpp>
 
 #include <catch2/catch.hpp>
@@ -418,7 +419,7 @@ TEMPLATE_LIST_TEST_CASE("3D bodies: a collision keeps momentum and angular momen
 // exactly; the top layer then carries C_11 eps times the box's cross
 // section. At eps = 1e-4 the geometric nonlinearity is of order eps: 0.1 %
 // is allowed.
-TEMPLATE_LIST_TEST_CASE("3D: a bonded FCC block has the lattice's C11", "[engine3][physics]",
+TEMPLATE_LIST_TEST_CASE("3D: a bonded FCC block has the lattice's C11 and C12", "[engine3][physics]",
                         vrut_test::ExecutionSpaces) {
   using namespace vrut;
   const double r = 0.001, d = 2.0 * r, a = d * std::sqrt(2.0), kn = 1e6, ks = 0.4 * kn, rho = 2500.0;
@@ -461,9 +462,35 @@ TEMPLATE_LIST_TEST_CASE("3D: a bonded FCC block has the lattice's C11", "[engine
     else if (x(i).z < 0.1 * a) bottom += f(i).z;
     else interior = std::max(interior, norm(f(i)));
   }
-  const double expected = std::sqrt(2.0) * (kn + ks) / d * strain * (cells * a) * (cells * a);
+  const double c11 = std::sqrt(2.0) * (kn + ks) / d, c12 = (kn - ks) / (std::sqrt(2.0) * d);
+  const double area = (cells * a) * (cells * a), expected = c11 * strain * area;
   INFO("top " << top << " bottom " << bottom << " expected " << expected);
   CHECK(top == Approx(expected).epsilon(1e-3));  // pushed up by the block
   CHECK(bottom == Approx(-expected).epsilon(1e-3));
   CHECK(interior < 1e-6 * expected / (cells * cells));  // the interior is in equilibrium
+
+  // The stresses inside, from the contact forces (the virial sum of force
+  // times branch vector over the block between the outer layers): the
+  // vertical one C11 eps again, the lateral ones C12 eps (8 of the 12 bonds
+  // cross the layers; 4 of those lie in each vertical plane of a lateral axis,
+  // f_x l_x = (k_n - k_s) eps d^2 / 4 each). C11 and C12 give the modulus
+  // along a cube axis that the 3D Burger's rules use (MicroConversion::fcc_lattice).
+  const auto& list = sim.contacts();
+  auto partner = vrut_test::to_host(list.partner);
+  auto count = vrut_test::to_host(list.count);
+  auto load = vrut_test::to_host(list.load);
+  Vec3 virial{};
+  for (std::size_t i = 0; i < set.size(); ++i)
+    for (int k = 0; k < count(i); ++k) {
+      const Vec3 l = settings.box.separation(x(i), x(partner(i, k)));
+      const Vec3 f = load(i, k).force;  // on the row's partner
+      virial += Vec3{f.x * l.x, f.y * l.y, f.z * l.z};
+    }
+  const Vec3 stress = (1.0 / (area * height)) * virial;  // compression positive
+  CHECK(stress.z == Approx(c11 * strain).epsilon(1e-3));
+  CHECK(stress.x == Approx(c12 * strain).epsilon(1e-3));
+  CHECK(stress.y == Approx(c12 * strain).epsilon(1e-3));
+  const double m11 = stress.z / strain, m12 = 0.5 * (stress.x + stress.y) / strain;
+  const double modulus = (m11 - m12) * (m11 + 2.0 * m12) / (m11 + m12);
+  CHECK(modulus == Approx(MicroConversion::fcc_lattice_modulus_factor(ks / kn) * kn / d).epsilon(2e-3));
 }

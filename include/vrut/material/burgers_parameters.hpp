@@ -74,6 +74,28 @@ struct MicroConversion {
     const double f = finite_size_factor / c;
     return {f, f, f, f};
   }
+  // 3D: makes spheres of diameter d on a face-centred cubic packing creep
+  // like the macro model along a cube axis, when the micro parameters are
+  // the macro constants times d (pass d where the 2D rules take the disk
+  // width t). Normal springs k and shear springs beta k between the twelve
+  // neighbours give the cubic constants C11 = sqrt(2)(1+beta) k / d,
+  // C12 = (1-beta) k / (sqrt(2) d), C44 = (1+beta) k / (sqrt(2) d), so a
+  // uniaxial stress along a cube axis meets the modulus
+  //   E = (C11 - C12)(C11 + 2 C12)/(C11 + C12) = c k / d,
+  //   c = 2 sqrt(2) (1 + 3 beta)/(3 + beta)
+  // (docs/burgers.md, "The FCC lattice"); each micro parameter is divided
+  // by c, as in 2D. Lattice theory alone: no finite-size factor is measured
+  // for 3D yet.
+  static MicroConversion fcc_lattice(double nu) {
+    validate_poisson(nu);
+    const double beta = 1.0 / (2.0 * (1.0 + nu));
+    const double f = 1.0 / fcc_lattice_modulus_factor(beta);
+    return {f, f, f, f};
+  }
+  // c above: the FCC lattice's modulus along a cube axis, E = c k / d.
+  static double fcc_lattice_modulus_factor(double beta) {
+    return 2.0 * std::sqrt(2.0) * (1.0 + 3.0 * beta) / (3.0 + beta);
+  }
   // The free sides of a finite block make it softer than the infinite
   // lattice. Measured with vrut-creep on its default 20 x 10 block at
   // alpha_T = 1e2 (quasi-static): apparent eta1 = 0.957 of the lattice value
