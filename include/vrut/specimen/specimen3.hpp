@@ -1,0 +1,93 @@
+#pragma once
+// The 3D digital specimen: gradation -> polyhedral stones -> spheres on an
+// FCC packing (docs/specimen.md, "In 3D"). Same settings and seed, same
+// specimen. Host-only; mm. Needs the target vrut::stones3.
+#include <vrut/data/particle_set.hpp>
+#include <vrut/specimen/fcc_packing.hpp>
+#include <vrut/specimen/placement3.hpp>
+#include <vrut/specimen/specimen.hpp>
+
+#include <cstdint>
+#include <random>
+#include <string>
+
+namespace vrut {
+
+struct SpecimenSettings3 {
+  Gradation gradation = builtin_gradation(2);
+  MixVolumetrics mix;
+  PlacementSettings3 placement;  // the box (its depth is rounded to whole FCC cells), shape, tries
+  double sphere_radius = 1.0;    // mm
+  double air_voids = 0.04;       // fraction of the box
+  std::uint64_t seed = 1;
+};
+
+struct Specimen3 {
+  double width = 0.0, height = 0.0, depth = 0.0;  // mm; the depth periodic
+  std::string name;
+  SpecimenSettings3 settings;
+  Stereology stereology;  // only its classes and volume fractions: no sections in 3D
+  Placement3 placement;
+  SpherePacking spheres;
+};
+
+// The stone (index into placement.stones) that holds a point, or
+// mastic_site; the depth is periodic.
+class StoneLocator3 {
+ public:
+  StoneLocator3(const Placement3& p, double width, double height)
+      : placement_(p), grid_(width, height, p.depth, 4.0) {
+    for (std::size_t s = 0; s < p.stones.size(); ++s) grid_.insert(static_cast<int>(s), p.stones[s].shape.bounds());
+  }
+  int operator()(const Point3& x) {
+    int in = mastic_site;
+    for (double image : {0.0, -placement_.depth, placement_.depth}) {
+      const Point3 y = x + Point3(0.0, 0.0, image);
+      grid_.any_near(Eigen::AlignedBox3d(y, y), [&](int id) {
+        if (placement_.stones[id].shape.contains(y)) in = id;
+        return in >= 0;
+      });
+      if (in >= 0) break;
+    }
+    return in;
+  }
+
+ private:
+  const Placement3& placement_;
+  detail::StoneGrid3 grid_;
+};
+
+inline Specimen3 generate_specimen3(const SpecimenSettings3& s) {
+  validate_gradation(s.gradation, [&](std::size_t i) { return s.gradation.name + " row " + std::to_string(i + 1); });
+  Specimen3 out;
+  out.settings = s;
+  out.name = "seed " + std::to_string(s.seed);
+  out.width = s.placement.width;
+  out.height = s.placement.height;
+  const int cells = fcc_cells_deep(s.placement.depth, s.sphere_radius);
+  out.depth = cells * fcc_cell(s.sphere_radius);
+  out.stereology = stereology(s.gradation, s.mix);
+  PlacementSettings3 placement = s.placement;
+  placement.depth = out.depth;
+  // One stream for the stones, one for the voids, as in 2D.
+  std::mt19937_64 stones_rng(s.seed), voids_rng(s.seed ^ 0x9e3779b97f4a7c15ULL);
+  out.placement = place_stones3(out.stereology, placement, stones_rng);
+  StoneLocator3 locate(out.placement, out.width, out.height);
+  out.spheres = pack_spheres_by(locate, out.width, out.height, cells, s.sphere_radius, s.air_voids, voids_rng);
+  return out;
+}
+
+// The spheres as DEM input, in metres; groups as in 2D (SpecimenGroup).
+inline ParticleSet to_particle_set(const Specimen3& sp, double mastic_density, double aggregate_density) {
+  ParticleSet set;
+  const double r = sp.spheres.radius * 1e-3;
+  for (std::size_t i = 0; i < sp.spheres.centers.size(); ++i) {
+    const bool stone = sp.spheres.stone[i] >= 0;
+    const Point3& c = sp.spheres.centers[i];
+    set.add_sphere(c.x() * 1e-3, c.y() * 1e-3, c.z() * 1e-3, r, stone ? aggregate_density : mastic_density,
+                   stone ? aggregate_group : mastic_group);
+  }
+  return set;
+}
+
+}  // namespace vrut
