@@ -1,12 +1,16 @@
 // vrut-specimen: generates a digital asphalt specimen from a gradation, or
 // makes one from an image of a section (--image), and writes its picture,
-// its statistics and a VTK file of the disks.
+// its statistics and a VTK file of the disks; with --dim 3 a 3D specimen
+// (polyhedral stones, spheres), its pictures at mid-depth and from above.
 #include "common/cli.hpp"
 #include "common/draw.hpp"
+#include "common/draw3.hpp"
 #include "common/image_cli.hpp"
+#include "common/specimen3_cli.hpp"
 #include "common/specimen_cli.hpp"
 
 #include <vrut/io/memory_check.hpp>
+#include <vrut/io/progress.hpp>
 #include <vrut/io/output_dir.hpp>
 #include <vrut/specimen/specimen.hpp>
 
@@ -17,6 +21,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <memory>
 
 int main(int argc, char** argv) {
   using namespace specimen_cli;
@@ -24,15 +29,61 @@ int main(int argc, char** argv) {
   std::string out = "out/specimen";
   bool force = false;
   image_cli::ImageOptions io;
+  Specimen3Options o3;
+  int dim = 2;
   CLI::App app("vrut-specimen: digital asphalt specimen from a gradation (aggregates, disks, air voids), or from an "
-               "image of a section (--image)");
+               "image of a section (--image); --dim 3: a 3D specimen (polyhedral stones, spheres)");
+  app.add_option("--dim", dim, "2 (a section of disks) or 3 (a box of spheres, periodic along its depth)")
+      ->check(CLI::IsMember({2, 3}))->capture_default_str();
   add_specimen_options(app, o);
+  add_specimen3_options(app, o3);
   image_cli::add_image_options(app, io, false);
   app.add_option("--out", out, "output folder")->capture_default_str();
   app.add_flag("--force", force, "overwrite an existing output folder");
   if (const int code = cli::parse(app, argc, argv); code >= 0) return code;
   io.images = image_cli::given_images(io);
   return cli::guarded([&] {
+    if (dim == 3) {
+      for (const char* only2d : {"--disk-radius-mm", "--placement", "--binder-film-mm", "--image", "--images"})
+        if (app.get_option_no_throw(only2d) && app.count(only2d) > 0)
+          throw std::invalid_argument(std::string(only2d) + " is for 2D sections; a 3D specimen has --sphere-radius-mm "
+                                      "and --depth-mm, and places its stones by jiggling");
+      const vrut::SpecimenSettings3 s3 = to_settings3(o, o3);
+      // About 0.3 kB a sphere at most (the specimen, its pictures and VTK).
+      const double spheres = 4.0 / (std::pow(vrut::fcc_cell(s3.sphere_radius), 3)) * s3.placement.width *
+                             s3.placement.height * s3.placement.depth;
+      vrut::require_memory(spheres, 512.0, 64e6, "this 3D specimen");
+      vrut::OutputDir dir(out, force);
+      vrut::Specimen3 sp;
+      const auto start = std::chrono::steady_clock::now();
+      try {
+        std::unique_ptr<vrut::ProgressBar> bar;
+        sp = vrut::generate_specimen3(s3, [&](std::size_t placed, std::size_t total) {
+          if (!bar) bar = std::make_unique<vrut::ProgressBar>("placing stones", static_cast<long>(total), "stones");
+          bar->update(static_cast<long>(placed));
+          if (placed == total) bar->finish();
+        });
+      } catch (const std::runtime_error& e) {  // the target could not be reached
+        std::cerr << "error: " << e.what() << '\n';
+        return 1;
+      }
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      nlohmann::json j = specimen3_summary(sp);
+      j["seconds"] = seconds;
+      std::ofstream(dir.file("specimen.json")) << j.dump(2) << '\n';
+      draw::section3_png(sp, dir.file("section_mid_depth.png").string());
+      draw::surface3_png(sp, dir.file("surface.png").string());
+      write_specimen3_vtk(sp, dir.file("specimen.vtk").string());
+      dir.commit();
+      std::printf("gradation %s, 3D: %.0f x %.0f x %.2f mm, %zu stones, volume fraction %.4f (target %.4f), %d jammed "
+                  "and jiggled in; %zu spheres of %.2f mm, air voids %.4f; generated in %.1f s\nresults in %s\n",
+                  sp.settings.gradation.name.c_str(), sp.width, sp.height, sp.depth, sp.placement.stones.size(),
+                  sp.placement.achieved_fraction, sp.placement.target_fraction, sp.placement.jammed,
+                  sp.spheres.centers.size(), sp.spheres.radius, sp.spheres.air_void_achieved, seconds, out.c_str());
+      return 0;
+    }
+    for (const char* only3d : {"--depth-mm", "--sphere-radius-mm"})
+      if (app.count(only3d) > 0) throw std::invalid_argument(std::string(only3d) + " is for 3D specimens (--dim 3)");
     if (io.images.size() > 1) throw std::invalid_argument("--image: one image at a time (vrut-rutting runs several)");
     if (!io.images.empty()) {
       // Everything is read and checked before the output folder is made.

@@ -128,6 +128,23 @@ specimen)
   else echo "FAIL: stone fraction from the image $read_back, generated $generated"; failures=$((failures + 1)); fi
   grep -q '"gradation_percent_passing"' "$work/from_image/specimen.json" ||
     { echo "FAIL: no gradation beside the image's quantity gradation"; failures=$((failures + 1)); }
+  # 3D: the options of the other dimension refused, a depth too shallow for
+  # the stones refused, and a small box made twice, the same bytes.
+  expect "2" "disk-radius-mm is for 2D sections" -- --dim 3 --disk-radius-mm 0.5 --out k
+  expect "2" "sphere-radius-mm is for 3D" -- --sphere-radius-mm 1 --out l
+  expect "2" "too small for its stones.*at least twice" -- --dim 3 --depth-mm 20 --width-mm 60 --out m
+  expect "1 2" "dim" -- --dim 4 --out n
+  for d in k l m n; do
+    [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
+  done
+  expect "0" "3D: .*volume fraction" -- --dim 3 --gradation 1 --width-mm 60 --seed 2 --out three
+  expect "0" "3D: .*volume fraction" -- --dim 3 --gradation 1 --width-mm 60 --seed 2 --out three_again
+  for f in specimen.json specimen.vtk section_mid_depth.png surface.png; do
+    [[ -s "$work/three/$f" ]] || { echo "FAIL: no $f from --dim 3"; failures=$((failures + 1)); }
+    [[ $f == specimen.json ]] && continue  # it holds the time taken
+    cmp -s "$work/three/$f" "$work/three_again/$f" || { echo "FAIL: 3D $f differs between two runs"; failures=$((failures + 1)); }
+  done
+  grep -q '"dimension": 3' "$work/three/specimen.json" || { echo "FAIL: no dimension in the 3D specimen.json"; failures=$((failures + 1)); }
   ;;
 rutting)
   small=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300)

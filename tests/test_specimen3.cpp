@@ -57,12 +57,16 @@ TEST_CASE("3D stones: the hull of a cube's and an octahedron's corners, by hand"
     }
     CHECK(on >= 3);
   }
+  // Its section at any height inside is the 2 x 2 square; none outside.
+  CHECK(vrut::section_at_z(c, 0.3).area() == Approx(4.0).epsilon(1e-12));
+  CHECK(vrut::section_at_z(c, 1.2).vertices.empty());
   // The octahedron |x| + |y| + |z| <= a: volume 4 a^3 / 3.
   const double a = 1.5;
   const std::vector<Point3> octa{{a, 0, 0}, {-a, 0, 0}, {0, a, 0}, {0, -a, 0}, {0, 0, a}, {0, 0, -a}};
   const vrut::Stone3 o = vrut::convex_hull_stone(octa);
   CHECK(o.volume == Approx(4.0 * a * a * a / 3.0).epsilon(1e-12));
   CHECK(o.centroid.norm() < 1e-12);
+  CHECK(vrut::section_at_z(o, 0.5 * a).area() == Approx(0.5 * a * a).epsilon(1e-12));  // |x| + |y| <= a / 2
   CHECK(o.contains(Point3(0.49 * a, 0.49 * a, 0.0)));
   CHECK_FALSE(o.contains(Point3(0.4 * a, 0.4 * a, 0.3 * a)));
 }
@@ -90,6 +94,12 @@ TEST_CASE("3D stones: a random stone's volume against Monte Carlo, and its shape
     for (int i = 0; i < n; ++i) in += s.contains(Point3(half * u(rng), half * u(rng), half * u(rng)));
     const double f = s.volume / box, se = std::sqrt(f * (1.0 - f) / n);
     CHECK(std::abs(static_cast<double>(in) / n - f) < 4.0 * se);
+    // And the sections' areas summed through the stone (midpoint rule, 4000
+    // slices: the area is piecewise quadratic in z, error below 1e-6).
+    double by_slices = 0.0;
+    const int slices = 4000;
+    for (int k = 0; k < slices; ++k) by_slices += vrut::section_at_z(s, -half + (k + 0.5) * 2.0 * half / slices).area();
+    CHECK(by_slices * 2.0 * half / slices == Approx(s.volume).epsilon(1e-5));
   }
 }
 

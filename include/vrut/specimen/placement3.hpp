@@ -13,12 +13,14 @@
 // positions (the shape is already turned at random) until it overlaps
 // nothing; a stone with no room after `attempts` tries gets rounds of
 // jiggling, as in 2D (placement.hpp): every placed stone moved and turned a
-// little at random, kept where it fits, then more tries.
+// little at random, kept where it fits, then more tries. progress(placed,
+// total) is told of every stone placed.
 #include <vrut/specimen/stereology.hpp>
 #include <vrut/specimen/stone3.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -147,7 +149,8 @@ std::vector<PlacedStone3> draw_stones3(const Stereology& st, double box_volume, 
 }
 
 template <class Rng>
-Placement3 place_stones3(const Stereology& st, const PlacementSettings3& ps, Rng& rng) {
+Placement3 place_stones3(const Stereology& st, const PlacementSettings3& ps, Rng& rng,
+                         const std::function<void(std::size_t placed, std::size_t total)>& progress = {}) {
   ps.shape.validate();
   if (!(ps.width > 0.0 && ps.height > 0.0 && ps.depth > 0.0))
     throw std::invalid_argument("the 3D specimen must have a positive width, height and depth");
@@ -269,6 +272,7 @@ Placement3 place_stones3(const Stereology& st, const PlacementSettings3& ps, Rng
     grid.insert(static_cast<int>(out.stones.size()), placed_bounds.back());
     placed_volume += s.shape.volume;
     out.stones.push_back(std::move(s));
+    if (progress) progress(out.stones.size(), todo.size());
   }
   out.achieved_fraction = placed_volume / box_volume;
   return out;

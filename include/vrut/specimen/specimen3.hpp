@@ -8,6 +8,7 @@
 #include <vrut/specimen/specimen.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <string>
 
@@ -57,7 +58,9 @@ class StoneLocator3 {
   detail::StoneGrid3 grid_;
 };
 
-inline Specimen3 generate_specimen3(const SpecimenSettings3& s) {
+// progress(placed, total): the stones' placement, which takes most of the time.
+inline Specimen3 generate_specimen3(const SpecimenSettings3& s,
+                                    const std::function<void(std::size_t, std::size_t)>& progress = {}) {
   validate_gradation(s.gradation, [&](std::size_t i) { return s.gradation.name + " row " + std::to_string(i + 1); });
   Specimen3 out;
   out.settings = s;
@@ -71,7 +74,7 @@ inline Specimen3 generate_specimen3(const SpecimenSettings3& s) {
   placement.depth = out.depth;
   // One stream for the stones, one for the voids, as in 2D.
   std::mt19937_64 stones_rng(s.seed), voids_rng(s.seed ^ 0x9e3779b97f4a7c15ULL);
-  out.placement = place_stones3(out.stereology, placement, stones_rng);
+  out.placement = place_stones3(out.stereology, placement, stones_rng, progress);
   StoneLocator3 locate(out.placement, out.width, out.height);
   out.spheres = pack_spheres_by(locate, out.width, out.height, cells, s.sphere_radius, s.air_voids, voids_rng);
   return out;

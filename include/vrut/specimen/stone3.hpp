@@ -17,6 +17,8 @@
 // then a plane through a stone cuts a polygon of 7.0 edges on average, 97 %
 // of them with 4 to 10, as the method's 2D stones have (n uniform in
 // [4, 10]); 8 to 20 vertices would cut 11 on average (docs/specimen.md).
+#include <vrut/specimen/polygon.hpp>
+
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <ccd/ccd.h>
@@ -149,6 +151,31 @@ Stone3 random_stone3(double mean_radius, const StoneShape3& shape, Rng& rng) {
   s.translate(-s.centroid);
   s.centroid = Point3::Zero();  // exactly
   return s;
+}
+
+// The stone's section by the plane z = z0: a convex polygon, empty where
+// the plane misses it (the faces' half-planes clipping a square about it).
+inline Polygon section_at_z(const Stone3& s, double z0) {
+  const double big = 2.0 * s.reach + 1.0;
+  std::vector<Point> poly{{s.centroid.x() - big, s.centroid.y() - big}, {s.centroid.x() + big, s.centroid.y() - big},
+                          {s.centroid.x() + big, s.centroid.y() + big}, {s.centroid.x() - big, s.centroid.y() + big}};
+  for (const auto& p : s.planes) {
+    // Inside: a x + b y <= c on the plane.
+    const double a = p[0], b = p[1], c = p[3] - p[2] * z0;
+    std::vector<Point> kept;
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+      const Point& u = poly[k];
+      const Point& v = poly[(k + 1) % poly.size()];
+      const double fu = a * u.x() + b * u.y() - c, fv = a * v.x() + b * v.y() - c;
+      if (fu <= 0.0) kept.push_back(u);
+      if ((fu < 0.0 && fv > 0.0) || (fu > 0.0 && fv < 0.0)) kept.push_back(u + (fu / (fu - fv)) * (v - u));
+    }
+    poly.swap(kept);
+    if (poly.size() < 3) return {};
+  }
+  Polygon out;
+  out.vertices = poly;
+  return out;
 }
 
 namespace detail {

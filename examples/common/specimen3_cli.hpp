@@ -1,0 +1,96 @@
+#pragma once
+// The 3D specimen's options, summary and VTK file (vrut-specimen --dim 3).
+#include "cli.hpp"
+#include "specimen_cli.hpp"
+
+#include <vrut/io/vtk.hpp>
+#include <vrut/specimen/specimen3.hpp>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace specimen_cli {
+
+struct Specimen3Options {
+  double depth_mm = vrut::PlacementSettings3{}.depth;
+  double sphere_radius_mm = vrut::SpecimenSettings3{}.sphere_radius;
+};
+
+// The options only 3D has; `o` holds the ones both have.
+inline void add_specimen3_options(CLI::App& app, Specimen3Options& o) {
+  app.add_option("--depth-mm", o.depth_mm,
+                 "3D: the specimen's depth, periodic, rounded to whole FCC cells; at least twice the largest stone")
+      ->check(cli::finite_range(1.0, 1e4))->capture_default_str();
+  app.add_option("--sphere-radius-mm", o.sphere_radius_mm, "3D: sphere radius")->check(cli::finite_range(0.05, 10.0))
+      ->capture_default_str();
+}
+
+inline vrut::SpecimenSettings3 to_settings3(const SpecimenOptions& o, const Specimen3Options& o3) {
+  const vrut::SpecimenSettings s2 = to_settings(o);
+  vrut::SpecimenSettings3 s;
+  s.gradation = s2.gradation;
+  s.mix = s2.mix;
+  s.seed = s2.seed;
+  s.air_voids = s2.air_voids;
+  s.placement.width = o.width_mm;
+  s.placement.height = o.height_mm;
+  s.placement.depth = o3.depth_mm;
+  s.placement.shape.radius_fluctuation = o.radius_fluctuation;
+  s.placement.shape.angle_fluctuation = o.angle_fluctuation;
+  s.sphere_radius = o3.sphere_radius_mm;
+  return s;
+}
+
+inline nlohmann::json specimen3_summary(const vrut::Specimen3& sp) {
+  nlohmann::json j;
+  j["dimension"] = 3;
+  j["gradation"] = sp.settings.gradation.name;
+  j["seed"] = sp.settings.seed;
+  j["box_mm"] = {sp.width, sp.height, sp.depth};
+  j["periodic"] = "depth (z)";
+  j["stones_jammed"] = sp.placement.jammed;  // found no room in random tries: jiggled in
+  j["stone_volume_fraction"] = {{"target", sp.placement.target_fraction}, {"achieved", sp.placement.achieved_fraction}};
+  j["air_void_fraction"] = {{"target", sp.spheres.air_void_target}, {"achieved", sp.spheres.air_void_achieved}};
+  j["sphere_radius_mm"] = sp.spheres.radius;
+  std::size_t in_stones = 0;
+  for (int s : sp.spheres.stone) in_stones += s >= 0;
+  j["spheres"] = {{"total", sp.spheres.centers.size()}, {"in_stones", in_stones},
+                  {"mastic", sp.spheres.centers.size() - in_stones},
+                  {"removed_for_air_voids", sp.spheres.removed_for_voids}, {"bonds", sp.spheres.bonds.size()}};
+  nlohmann::json per_class = nlohmann::json::array();
+  const double box = sp.width * sp.height * sp.depth;
+  for (std::size_t c = 0; c < sp.stereology.classes.size(); ++c) {
+    int count = 0;
+    double volume = 0.0;
+    for (const auto& s : sp.placement.stones)
+      if (s.size_class == static_cast<int>(c)) ++count, volume += s.shape.volume;
+    per_class.push_back({{"lower_mm", sp.stereology.classes[c].lower_mm},
+                         {"upper_mm", sp.stereology.classes[c].upper_mm},
+                         {"count", count},
+                         {"volume_fraction", volume / box},
+                         {"target_volume_fraction", sp.stereology.volume_fraction[c]}});
+  }
+  j["stones"] = per_class;
+  j["stone_count"] = sp.placement.stones.size();
+  return j;
+}
+
+inline void write_specimen3_vtk(const vrut::Specimen3& sp, const std::string& path) {
+  std::vector<double> x, y, z, radius, group, stone;
+  for (std::size_t i = 0; i < sp.spheres.centers.size(); ++i) {
+    x.push_back(sp.spheres.centers[i].x());
+    y.push_back(sp.spheres.centers[i].y());
+    z.push_back(sp.spheres.centers[i].z());
+    radius.push_back(sp.spheres.radius);
+    group.push_back(sp.spheres.stone[i] >= 0 ? vrut::aggregate_group : vrut::mastic_group);
+    stone.push_back(sp.spheres.stone[i]);
+  }
+  vrut::VtkPointData data;
+  data.scalars = {{"radius", radius}, {"group", group}, {"stone", stone}};
+  vrut::write_vtk_points(path, "vrut 3D specimen (mm, y up, z periodic); group 0 mastic, 1 stone", x, y, z, data);
+}
+
+}  // namespace specimen_cli
