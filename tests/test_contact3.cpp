@@ -285,3 +285,22 @@ TEST_CASE("two clumps collide keeping momentum and angular momentum", "[physics]
   CHECK(std::abs(elastic.energy / before.energy - 1.0) < 1e-3);
   CHECK(vrut::norm(elastic.angular - before.angular) < 1e-11 * vrut::norm(before.angular));
 }
+
+// Found by the 3D rutting run: the film law caps its film's share first and
+// then the stones' with what is left, which rounding can leave a hair below
+// zero; the zero stone force was then scaled by 0 / 0 into NaN.
+TEST_CASE("a shear vector capped at zero or below is zero, never NaN", "[unit][contact3]") {
+  using vrut::Vec3;
+  const Vec3 none = vrut::cap_magnitude(Vec3{}, -1e-20);
+  CHECK(none.x == 0.0);
+  CHECK(none.y == 0.0);
+  CHECK(none.z == 0.0);
+  const Vec3 gone = vrut::cap_magnitude(Vec3{3.0, 4.0, 0.0}, 0.0);
+  CHECK(vrut::norm(gone) == 0.0);
+  const Vec3 capped = vrut::cap_magnitude(Vec3{3.0, 4.0, 0.0}, 1.0);
+  CHECK(capped.x == Approx(0.6));
+  CHECK(capped.y == Approx(0.8));
+  const Vec3 kept = vrut::cap_magnitude(Vec3{3.0, 4.0, 0.0}, 5.0);
+  CHECK(kept.x == 3.0);
+  CHECK(kept.y == 4.0);
+}

@@ -49,9 +49,13 @@ KOKKOS_INLINE_FUNCTION double clamp_magnitude(double v, double limit) {
   return v > limit ? limit : (v < -limit ? -limit : v);
 }
 KOKKOS_INLINE_FUNCTION double cap_magnitude(double v, double limit) { return clamp_magnitude(v, limit); }
+// A limit at or below zero leaves nothing: a cap that the film's share has
+// used up may come out a rounding error below zero, and a zero vector would
+// otherwise be scaled by 0 / 0.
 KOKKOS_INLINE_FUNCTION Vec3 cap_magnitude(Vec3 f, double limit) {
   const double length = norm(f);
-  return length > limit ? (limit / length) * f : f;
+  if (!(length > limit)) return f;
+  return limit > 0.0 ? (limit / length) * f : Vec3{};
 }
 
 }  // namespace vrut
