@@ -184,8 +184,32 @@ rutting)
   expect "2" "needs about [0-9.e+]+ GiB of memory.*available" -- --width-mm 10000 --height-mm 10000 \
     --disk-radius-mm 0.05 --out bad
   [[ -e "$work/bad" ]] && { echo "FAIL: output folder bad written after an error"; failures=$((failures + 1)); }
+  # 3D: what it does not have yet is refused by name, and the 3D options in 2D.
+  small3=(--dim 3 --gradation 1 --width-mm 40 --sphere-radius-mm 1.5 --shift 1e5 --settle-steps 300)
+  expect "2" "--seeds is not in the 3D test yet" -- "${small3[@]}" --seeds 1-2 --out bad3
+  expect "2" "--stone-film mean is not in the 3D test yet" -- "${small3[@]}" --stone-film mean --out bad3
+  expect "2" "--exact-stones is not in the 3D test yet" -- "${small3[@]}" --exact-stones --out bad3
+  expect "2" "--disk-radius-mm is for 2D" -- "${small3[@]}" --disk-radius-mm 0.5 --out bad3
+  expect "2" "--depth-mm is for the 3D test" -- --depth-mm 30 --out bad3
+  expect "2" "too small for its stones" -- "${small3[@]}" --depth-mm 20 --out bad3
+  [[ -e "$work/bad3" ]] && { echo "FAIL: output folder bad3 written after an error"; failures=$((failures + 1)); }
   # The runs that succeed, which the sanitizer build (VRUT_ERRORS_ONLY) leaves out: too slow there.
   if [[ -z ${VRUT_ERRORS_ONLY:-} ]]; then
+  # A small 3D run end to end, its outputs, and the plate held at the pressure.
+  expect "0" "3D: rut depth" -- "${small3[@]}" --out run3d
+  for f in summary.json deformation.csv deformation.png section_mid_depth.png specimen_mid_depth.png surface.png \
+           final.vtk config.ini; do
+    [[ -s "$work/run3d/$f" ]] || { echo "FAIL: no 3D $f"; failures=$((failures + 1)); }
+  done
+  grep -q '"dimension": 3' "$work/run3d/summary.json" || { echo "FAIL: no dimension in the 3D summary"; failures=$((failures + 1)); }
+  # The mean pressure over the last sample of the curve: 0.7 MPa within 2 %.
+  pressure3=$(tail -n 1 "$work/run3d/deformation.csv" | cut -d, -f4)
+  if awk -v p="$pressure3" 'BEGIN { exit !(p > 0.686 && p < 0.714) }'; then echo "ok:   3D plate pressure $pressure3 MPa"
+  else echo "FAIL: 3D plate pressure $pressure3 MPa, not 0.7"; failures=$((failures + 1)); fi
+  # Its config.ini runs it again, the same curve.
+  expect "0" "3D: rut depth" -- --config run3d/config.ini --out run3d_again
+  cmp -s "$work/run3d/deformation.csv" "$work/run3d_again/deformation.csv" ||
+    { echo "FAIL: the 3D run's config.ini does not reproduce it"; failures=$((failures + 1)); }
   expect "0" "rut depth" -- "${small[@]}" --out run1
   for f in summary.json deformation.csv deformation.png specimen.png rut_forming.png displacement.png final.vtk config.ini; do
     [[ -s "$work/run1/$f" ]] || { echo "FAIL: no $f"; failures=$((failures + 1)); }

@@ -8,6 +8,7 @@
 #include "../common/specimen_cli.hpp"
 #include "options.hpp"
 #include "outputs.hpp"
+#include "run3d.hpp"
 
 #include <vrut/analysis/rutting_ensemble.hpp>
 #include <vrut/analysis/standard_ds.hpp>
@@ -57,6 +58,16 @@ int main(int argc, char** argv) {
   given.seed_given = app.count("--seed") > 0;
 
   const int code = cli::guarded([&] {
+    if (given.dim == 3) {
+      if (!resume.empty()) throw std::invalid_argument("--resume is not in the 3D test yet");
+      if (session.size() > 1) throw std::invalid_argument("the 3D test runs on one MPI rank yet");
+      return run_rutting_3d(app, given);
+    }
+    // By value: a config file (config.ini) holds every option, at its default.
+    const specimen_cli::Specimen3Options defaults3;
+    if (given.o3.depth_mm != defaults3.depth_mm) throw std::invalid_argument("--depth-mm is for the 3D test (--dim 3)");
+    if (given.o3.sphere_radius_mm != defaults3.sphere_radius_mm)
+      throw std::invalid_argument("--sphere-radius-mm is for the 3D test (--dim 3)");
     namespace fs = std::filesystem;
     std::optional<vrut::CheckpointFile> checkpoint;
     RunOptions o = given;

@@ -21,6 +21,10 @@
 
 namespace vrut {
 
+// A spin's square: about the out-of-plane axis in 2D, a vector's in 3D.
+inline double spin_squared(double w) { return w * w; }
+inline double spin_squared(Vec3 w) { return dot(w, w); }
+
 struct SpecimenEnergy {
   double kinetic = 0.0;       // J, translation and rotation
   double gravity_work = 0.0;  // J, since the reference positions
@@ -38,12 +42,12 @@ std::vector<SpecimenEnergy> specimen_energies(Sim& sim, const HostPositions& ref
   auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.mass);
   auto inertia = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.inertia);
   auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.radius);
-  const Vec2 g = sim.settings().gravity;
+  const auto g = sim.settings().gravity;  // Vec2 or Vec3
   std::vector<SpecimenEnergy> out(sim.specimens());
   for (int s = 0; s < sim.specimens(); ++s) {
     const auto [first, last] = sim.specimen_range(s);
     for (int i = first; i < last; ++i) {
-      out[s].kinetic += 0.5 * m(i) * dot(v(i), v(i)) + 0.5 * inertia(i) * w(i) * w(i);
+      out[s].kinetic += 0.5 * m(i) * dot(v(i), v(i)) + 0.5 * inertia(i) * spin_squared(w(i));
       out[s].gravity_work += m(i) * dot(g, x(i) - reference(i));
       out[s].allowance += m(i) * norm(g) * r(i);
     }

@@ -80,13 +80,18 @@ inline Specimen3 generate_specimen3(const SpecimenSettings3& s,
   return out;
 }
 
-// The spheres as DEM input, in metres; groups as in 2D (SpecimenGroup).
+// The spheres as DEM input, in metres; groups as in 2D (SpecimenGroup). A
+// stone across the periodic depth keeps its spheres together: each takes
+// the image nearest its stone's centroid (the engine's positions need not
+// lie in the box), so that a stone's spheres can make one rigid body.
 inline ParticleSet to_particle_set(const Specimen3& sp, double mastic_density, double aggregate_density) {
   ParticleSet set;
   const double r = sp.spheres.radius * 1e-3;
   for (std::size_t i = 0; i < sp.spheres.centers.size(); ++i) {
-    const bool stone = sp.spheres.stone[i] >= 0;
-    const Point3& c = sp.spheres.centers[i];
+    const int s = sp.spheres.stone[i];
+    const bool stone = s >= 0;
+    Point3 c = sp.spheres.centers[i];
+    if (stone) c.z() += sp.depth * std::round((sp.placement.stones[s].shape.centroid.z() - c.z()) / sp.depth);
     set.add_sphere(c.x() * 1e-3, c.y() * 1e-3, c.z() * 1e-3, r, stone ? aggregate_density : mastic_density,
                    stone ? aggregate_group : mastic_group);
   }
