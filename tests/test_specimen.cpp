@@ -1,5 +1,6 @@
 // The digital specimen: stereology against a Monte Carlo experiment, the
 // placed aggregates against the 2D gradation, shapes, voids, reproducibility.
+#include "band_checks.hpp"
 #include "scratch.hpp"
 #include "specimen_checks.hpp"
 
@@ -402,26 +403,9 @@ TEST_CASE("the jiggling placement fills the section evenly, for every mix", "[sp
       for (int b = 0; b < bands; ++b) rows[b].push_back(r[b]), columns[b].push_back(c[b]);
     }
     CHECK(jammed > 0);  // the jiggling did happen
-    for (auto* which : {&rows, &columns}) {
-      const bool by_height = which == &rows;
-      std::vector<double> mean(bands), se(bands);
-      for (int b = 0; b < bands; ++b) {
-        double m = 0.0, q = 0.0;
-        for (double v : (*which)[b]) m += v / seeds;
-        for (double v : (*which)[b]) q += (v - m) * (v - m);
-        mean[b] = m;
-        se[b] = std::sqrt(q / (seeds - 1) / seeds);
-      }
-      const double interior = (mean[1] + mean[2] + mean[3]) / 3.0;
-      std::printf("mix %d#, %s bands: %.3f (mould) / %.3f / %.3f / %.3f / %.3f (mould); wall effect %.2f of the interior\n",
-                  mix, by_height ? "height" : "width", mean[0], mean[1], mean[2], mean[3], mean[4],
-                  0.5 * (mean[0] + mean[4]) / interior);
-      for (int b = 1; b < bands - 1; ++b) {
-        INFO("mix " << mix << "#, " << (by_height ? "height" : "width") << " band " << b << ": " << mean[b]
-                    << " +- " << se[b] << " against the interior's " << interior);
-        CHECK(std::abs(mean[b] - interior) <= 4.0 * se[b] + 1e-9);
-      }
-    }
+    const std::string mix_name = "mix " + std::to_string(mix) + "#, ";
+    vrut_test::check_interior_bands(rows, mix_name + "height");
+    vrut_test::check_interior_bands(columns, mix_name + "width");
   }
 }
 

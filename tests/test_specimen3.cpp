@@ -1,6 +1,8 @@
 // The 3D specimen (specimen/stone3.hpp, placement3.hpp, specimen3.hpp):
 // convex hulls against solids worked by hand, the overlap test against an
 // independent one, and placed stones that share no point.
+#include "band_checks.hpp"
+
 #include <vrut/specimen/specimen3.hpp>
 
 #include <catch2/catch.hpp>
@@ -238,27 +240,9 @@ void check_even_fill(int mix, double width) {
     for (int b = 0; b < bands; ++b) rows[b].push_back(r[b]), columns[b].push_back(c[b]);
   }
   std::printf("mix %d#, 3D, %g x 50 x 40 mm: %d stones jammed over %d specimens\n", mix, width, jammed, seeds);
-  for (auto* which : {&rows, &columns}) {
-    const bool by_height = which == &rows;
-    std::vector<double> mean(bands), se(bands);
-    for (int b = 0; b < bands; ++b) {
-      double m = 0.0, q = 0.0;
-      for (double v : (*which)[b]) m += v / seeds;
-      for (double v : (*which)[b]) q += (v - m) * (v - m);
-      mean[b] = m;
-      se[b] = std::sqrt(q / (seeds - 1) / seeds);
-    }
-    const double interior = (mean[1] + mean[2] + mean[3]) / 3.0;
-    std::printf("mix %d#, 3D, %s bands: %.3f (mould) / %.3f / %.3f / %.3f / %.3f (mould); wall effect %.2f of the "
-                "interior\n",
-                mix, by_height ? "height" : "width", mean[0], mean[1], mean[2], mean[3], mean[4],
-                0.5 * (mean[0] + mean[4]) / interior);
-    for (int b = 1; b < bands - 1; ++b) {
-      INFO("mix " << mix << "#, " << (by_height ? "height" : "width") << " band " << b << ": " << mean[b] << " +- "
-                  << se[b] << " against the interior's " << interior);
-      CHECK(std::abs(mean[b] - interior) <= 4.0 * se[b] + 1e-9);
-    }
-  }
+  const std::string mix_name = "mix " + std::to_string(mix) + "#, 3D, ";
+  vrut_test::check_interior_bands(rows, mix_name + "height");
+  vrut_test::check_interior_bands(columns, mix_name + "width");
 }
 
 }  // namespace

@@ -128,7 +128,10 @@ RuttingResult3 run_rutting3(const Specimen3& sp, const WheelTracking& wt, const 
   const double dt = num.timestep_safety * sim.critical_timestep();
   res.dt = dt;
 
-  auto energy_reference = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  // A copy of where the spheres start: on a host backend create_mirror_view_and_copy
+  // would hand back the positions themselves, and gravity's work would read 0.
+  Kokkos::View<Vec3*, Kokkos::HostSpace> energy_reference("energy_reference", sim.particles().size());
+  Kokkos::deep_copy(energy_reference, sim.particles().position);
   constexpr long energy_check_every = 500;
   for (long done = 0; done < num.settle_steps; done += energy_check_every) {
     sim.run(std::min(energy_check_every, num.settle_steps - done), dt);

@@ -85,10 +85,7 @@ SpherePacking pack_spheres_by(SiteOf site_of, double width, double height, int c
   if (remove > static_cast<int>(mastic.size()))
     throw std::invalid_argument("not enough mastic spheres for the air voids: need " + std::to_string(remove) +
                                 ", have " + std::to_string(mastic.size()));
-  for (int k = 0; k < remove; ++k) {  // partial Fisher-Yates
-    std::uniform_int_distribution<int> pick(k, static_cast<int>(mastic.size()) - 1);
-    std::swap(mastic[k], mastic[pick(rng)]);
-  }
+  detail::choose_at_random(mastic, remove, rng);
   std::vector<char> gone(centers.size(), 0);
   for (int k = 0; k < remove; ++k) gone[mastic[k]] = 1;
   for (std::size_t i = 0; i < centers.size(); ++i)

@@ -23,6 +23,20 @@ struct DiskPacking {
   double air_void_target = 0.0, air_void_achieved = 0.0;  // the random voids' fraction of the section
 };
 
+namespace detail {
+
+// Puts a uniform random choice of `count` of the candidates first (a partial
+// Fisher-Yates shuffle).
+template <class Rng>
+void choose_at_random(std::vector<int>& candidates, int count, Rng& rng) {
+  for (int k = 0; k < count; ++k) {
+    std::uniform_int_distribution<int> pick(k, static_cast<int>(candidates.size()) - 1);
+    std::swap(candidates[k], candidates[pick(rng)]);
+  }
+}
+
+}  // namespace detail
+
 // What a lattice site holds, by its centre: a stone's index (>= 0), mastic,
 // or nothing (a void the source shows, such as a pore in an image).
 constexpr int mastic_site = -1, void_site = -2;
@@ -63,10 +77,7 @@ DiskPacking pack_disks_by(SiteOf site_of, double width, double height, double ra
   if (remove > static_cast<int>(mastic.size()))
     throw std::invalid_argument("not enough mastic disks for the air voids: need " + std::to_string(remove) +
                                 ", have " + std::to_string(mastic.size()));
-  for (int k = 0; k < remove; ++k) {  // partial Fisher-Yates
-    std::uniform_int_distribution<int> pick(k, static_cast<int>(mastic.size()) - 1);
-    std::swap(mastic[k], mastic[pick(rng)]);
-  }
+  detail::choose_at_random(mastic, remove, rng);
   std::vector<char> gone(centers.size(), 0);
   for (int k = 0; k < remove; ++k) gone[mastic[k]] = 1;
   int void_sites = 0;
