@@ -22,6 +22,8 @@ cmake --build "$build" --target "${exes[@]}" 2>&1 | grep -E "error|\[[0-9]+/[0-9
 # and on any report in the output (VRUT_SANITIZED).
 export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:exitcode=86
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:exitcode=86
+# Other libraries' allocations kept until exit by design (lsan.supp says which).
+export LSAN_OPTIONS=suppressions=$src/tests/lsan.supp:print_suppressions=0
 export VRUT_SANITIZED=1 OMP_NUM_THREADS=2 OMP_PROC_BIND=false
 failures=0
 log=$build/sanitize.log
