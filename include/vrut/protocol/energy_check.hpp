@@ -15,6 +15,7 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -73,6 +74,26 @@ void check_energy(Sim& sim, const HostPositions& reference, const std::vector<do
                   "packings need 0.1 to 0.3 of it.",
                   step, s, e[s].kinetic, work, e[s].allowance, dt, dt / sim.critical_timestep());
     throw SimulationUnstable(text, step);
+  }
+}
+
+// Where the particles are now, as a host copy to measure gravity's work
+// from: on a host backend create_mirror_view_and_copy would hand back the
+// positions themselves, and the work would always read 0.
+template <class Sim>
+Kokkos::View<typename Sim::vector*, Kokkos::HostSpace> host_positions_copy(const Sim& sim) {
+  Kokkos::View<typename Sim::vector*, Kokkos::HostSpace> out("energy_reference", sim.particles().size());
+  Kokkos::deep_copy(out, sim.particles().position);
+  return out;
+}
+
+// Runs `steps` steps, checking the energy against `reference` every 500.
+template <class Sim, class HostPositions>
+void run_checking_energy(Sim& sim, long steps, double dt, const HostPositions& reference) {
+  constexpr long every = 500;
+  for (long done = 0; done < steps; done += every) {
+    sim.run(std::min(every, steps - done), dt);
+    check_energy(sim, reference, {}, sim.steps(), dt);
   }
 }
 

@@ -185,16 +185,9 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
 
   // Settling under gravity (a resumed run reads where it had got to instead).
   // The energy check (energy_check.hpp) counts the loads' work from here.
-  // A copy of where the disks start: on a host backend create_mirror_view_and_copy
-  // would hand back the positions themselves, and gravity's work would read 0.
-  Kokkos::View<Vec2*, Kokkos::HostSpace> energy_reference("energy_reference", sim.particles().size());
-  Kokkos::deep_copy(energy_reference, sim.particles().position);
+  auto energy_reference = host_positions_copy(sim);
   std::vector<double> plate_work(count, 0.0);
-  constexpr long energy_check_every = 500;  // settling steps
-  for (long done_settling = 0; !resuming && done_settling < num.settle_steps; done_settling += energy_check_every) {
-    sim.run(std::min(energy_check_every, num.settle_steps - done_settling), dt);
-    check_energy(sim, energy_reference, {}, sim.steps(), dt);
-  }
+  if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference);
 
   // The plates, each on the highest disk under it; the load brings it down.
   const double l = wt.contact_length();

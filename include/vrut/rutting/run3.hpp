@@ -128,15 +128,8 @@ RuttingResult3 run_rutting3(const Specimen3& sp, const WheelTracking& wt, const 
   const double dt = num.timestep_safety * sim.critical_timestep();
   res.dt = dt;
 
-  // A copy of where the spheres start: on a host backend create_mirror_view_and_copy
-  // would hand back the positions themselves, and gravity's work would read 0.
-  Kokkos::View<Vec3*, Kokkos::HostSpace> energy_reference("energy_reference", sim.particles().size());
-  Kokkos::deep_copy(energy_reference, sim.particles().position);
-  constexpr long energy_check_every = 500;
-  for (long done = 0; done < num.settle_steps; done += energy_check_every) {
-    sim.run(std::min(energy_check_every, num.settle_steps - done), dt);
-    check_energy(sim, energy_reference, {}, sim.steps(), dt);
-  }
+  const auto energy_reference = host_positions_copy(sim);
+  run_checking_energy(sim, num.settle_steps, dt, energy_reference);
 
   // The plate on the highest sphere under it, as deep as the specimen (its
   // pressure is its force over l times the depth), endless along it.
