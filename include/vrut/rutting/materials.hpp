@@ -161,24 +161,39 @@ inline std::vector<int> stone_bodies(const Specimen& sp) {
   return body;
 }
 
+// What sets a contact table's stiffnesses: the mastic's micro-parameter
+// rule and the length it multiplies E by (the disk width t in 2D; the sphere
+// diameter d in 3D, where the FCC rule carries the lattice's factor), the
+// length the stones' spring takes (t in 2D; d / c in 3D, rutting/run3.hpp),
+// and the particle diameter, which sizes the films between stones.
+struct RuttingTableScales {
+  MicroConversion conversion;
+  double mastic_length = 0.0, stone_length = 0.0;
+  double diameter = 0.0;  // m; only the films need it
+};
+
 // Group 0 is the mastic; the aggregates are groups 1 .. stone_colours, one
 // per colour (specimen/colouring.hpp), so that the table can tell two stones
 // from one; with the film per contact, one per colour and reach bin
 // (stone_group). With one colour that is the method's two-group table.
-// disk_diameter (m) sizes the film between stones; only the film needs it.
-inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, double thickness, double shift,
-                                                 int stone_colours = 1, double disk_diameter = 0.0) {
+// pairs_are_two_stones: every contact between two stone particles is one
+// between two stones (rigid stones, whose members never touch, and no
+// colours needed); the films then go between any two stone groups.
+inline AssignmentTable<RuttingLaw> rutting_table_with(const RuttingMaterials& m, double shift,
+                                                      const RuttingTableScales& scales, int stone_colours,
+                                                      bool pairs_are_two_stones = false) {
   const BurgersMacro reduced = m.mastic.shifted(TimeShift(shift));
-  const MicroConversion conv = m.calibrated_conversion ? MicroConversion::calibrated(m.mastic_nu) : MicroConversion::seed();
+  const MicroConversion& conv = scales.conversion;
+  const double mastic_length = scales.mastic_length, disk_diameter = scales.diameter;
   const double stone_friction = m.stone_friction < 0.0 ? m.friction : m.stone_friction;
   const bool films = m.films();
   const int bins = m.film_per_contact() ? film_reach_classes : 1;
   AssignmentTable<RuttingLaw> table(1 + stone_colours * bins);
   table.set(mastic_group, mastic_group,
-            RuttingLaw::make_first(film_params(mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0, m.friction))));
+            RuttingLaw::make_first(film_params(mastic_params(reduced, mastic_length, m.mastic_nu, conv, 1.0, m.friction))));
   const auto mastic_stone = RuttingLaw::make_first(
-      film_params(mastic_params(reduced, thickness, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction)));
-  const auto stone_params = stone_law_params(m, thickness, stone_friction);
+      film_params(mastic_params(reduced, mastic_length, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction)));
+  const auto stone_params = stone_law_params(m, scales.stone_length, stone_friction);
   const auto stone = RuttingLaw::make_second(stone_params);
   if (films) {
     if (!m.film_per_contact() && !(m.film_gap > 0.0 && m.film_gap < 1.0))
@@ -194,7 +209,7 @@ inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, doub
   // beyond it.
   auto film = [&](double gap) {
     const double length = m.film_per_contact() ? std::max(gap, film_least_gap) : gap;
-    const auto mastic = mastic_params(reduced, thickness, m.mastic_nu, conv, 1.0 / length, stone_friction);
+    const auto mastic = mastic_params(reduced, mastic_length, m.mastic_nu, conv, 1.0 / length, stone_friction);
     return RuttingLaw::make_first(m.film_endless ? film_params(mastic)
                                                  : film_params(mastic, gap * disk_diameter,
                                                                stone_params.normal.stiffness,
@@ -209,13 +224,24 @@ inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, doub
     const int colour_a = (a - 1) / bins, bin_a = (a - 1) % bins;
     for (int b = a; b < table.groups(); ++b) {
       const int colour_b = (b - 1) / bins, bin_b = (b - 1) % bins;
-      if (colour_a == colour_b || !films)
+      if (!films || (colour_a == colour_b && !pairs_are_two_stones))
         table.set(a, b, stone);
       else
         table.set(a, b, m.film_per_contact() ? film_between_bins(bin_a, bin_b) : mean_film);
     }
   }
   return table;
+}
+
+// The 2D table: disks of width t (thickness) and diameter disk_diameter (m;
+// only the films need it), by the method's rules or the calibrated ones.
+inline AssignmentTable<RuttingLaw> rutting_table(const RuttingMaterials& m, double thickness, double shift,
+                                                 int stone_colours = 1, double disk_diameter = 0.0) {
+  RuttingTableScales scales;
+  scales.conversion = m.calibrated_conversion ? MicroConversion::calibrated(m.mastic_nu) : MicroConversion::seed();
+  scales.mastic_length = scales.stone_length = thickness;
+  scales.diameter = disk_diameter;
+  return rutting_table_with(m, shift, scales, stone_colours);
 }
 
 }  // namespace vrut

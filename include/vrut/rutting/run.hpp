@@ -74,23 +74,26 @@ void check_inside_moulds(Sim& sim, const std::vector<Specimen>& specimens, long 
 }
 
 // The pairs of stones of specimen e that touch at the end, found in the
-// contact list (every overlapping disk pair is in it), and the stones.
+// contact list (every overlapping pair of particles is in it), and the
+// stones that hold particles. stone[i]: particle i's stone in the specimen
+// (-1 for mastic), of stone_count.
 template <class Sim>
-std::pair<int, int> touching_stones(const Sim& sim, const Specimen& sp, int e) {
+std::pair<int, int> touching_stones(const Sim& sim, const std::vector<int>& stone, std::size_t stone_count, int e) {
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
   auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().radius);
   auto partner = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.contacts().partner);
   auto count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.contacts().count);
+  const auto box = sim.contacts().box;  // the nearest image across a periodic axis
   const auto [first, last] = sim.specimen_range(e);
-  const std::vector<int>& stone = sp.disks.aggregate;
   std::vector<std::pair<int, int>> pairs;
-  std::vector<char> holds(sp.placement.aggregates.size(), 0);
+  std::vector<char> holds(stone_count, 0);
   for (int i = first; i < last; ++i) {
     if (stone[i - first] >= 0) holds[stone[i - first]] = 1;
     for (int k = 0; k < count(i); ++k) {
       const int j = partner(i, k);
       const int a = stone[i - first], b = stone[j - first];
-      if (a >= 0 && b >= 0 && a != b && norm(x(j) - x(i)) < r(i) + r(j)) pairs.emplace_back(std::min(a, b), std::max(a, b));
+      if (a >= 0 && b >= 0 && a != b && norm(box.separation(x(i), x(j))) < r(i) + r(j))
+        pairs.emplace_back(std::min(a, b), std::max(a, b));
     }
   }
   std::sort(pairs.begin(), pairs.end());
@@ -344,7 +347,8 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     res.wall_seconds = seconds_before + seconds;
     res.steps = done;
     res.contacts = sim.active_contacts(e);
-    std::tie(res.stones, res.stone_pairs_touching) = touching_stones(sim, specimens[e], e);
+    std::tie(res.stones, res.stone_pairs_touching) =
+        touching_stones(sim, specimens[e].disks.aggregate, specimens[e].placement.aggregates.size(), e);
     res.plate_y_final = walls[plate[e]].start.y;
     const auto [first, last] = sim.specimen_range(e);
     for (int i = first; i < last; ++i) {

@@ -12,9 +12,15 @@
 //     and stone, as in 2D;
 //   - rigid stones only (each stone's spheres one body), meeting on the
 //     rigid stones' spring, stone_contact_ratio times the mastic's normal
-//     spring E1 d / c, with its dashpot; no film between stones yet;
+//     spring E1 d / c, with its dashpot; with the film per contact, first
+//     through the mastic film between their surfaces (specimen/
+//     stone_reach3.hpp), as in 2D. A rigid stone's spheres never touch
+//     each other, so every contact between stone spheres is one between
+//     two stones: 3D needs no stone colours (2D has them for the method's
+//     bonded stones, specimen/colouring.hpp);
 //   - the mould and the plate on the same spring, frictionless by default.
-// One specimen a run (no ensembles, no checkpoints yet).
+// An ensemble runs side by side in one Simulation, with checkpoints and a
+// stop, as in 2D (run.hpp).
 #include <vrut/core/simulation.hpp>
 #include <vrut/protocol/energy_check.hpp>
 #include <vrut/rutting/materials.hpp>
@@ -23,6 +29,7 @@
 #include <vrut/rutting/test.hpp>
 #include <vrut/servo/servo.hpp>
 #include <vrut/specimen/specimen3.hpp>
+#include <vrut/specimen/stone_reach3.hpp>
 
 #include <Kokkos_Core.hpp>
 
@@ -33,6 +40,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace vrut {
@@ -44,27 +52,24 @@ inline double fcc_law_length(const RuttingMaterials& m, double diameter) {
   return diameter / MicroConversion::fcc_lattice_modulus_factor(beta);
 }
 
-// The 3D contact table: group 0 the mastic, 1 the stones. Two spheres of one
-// stone move as one body, so the stone law acts only between stones.
+// The 3D contact table, the 2D one's (rutting_table_with) on spheres of
+// `diameter` (m): group 0 the mastic, the stones (one group per reach bin,
+// with the film per contact). Two spheres of one stone move as one body and
+// never touch, so the stones' laws act only between two stones.
 inline AssignmentTable<RuttingLaw> rutting_table3(const RuttingMaterials& m, double diameter, double shift) {
   if (!m.rigid_stones)
     throw std::invalid_argument("the 3D rutting test has rigid stones only (the method's bonded stone spheres would "
                                 "need a time step thousands of times smaller)");
-  if (m.films())
-    throw std::invalid_argument("the 3D rutting test has no film between stones yet: give the stone film 'none'");
+  if (m.stone_film == StoneFilm::mean)
+    throw std::invalid_argument("the mean film's thickness (0.40 diameters) was measured between the stones of 2D "
+                                "sections; in 3D two stones meet through the film per contact, or through none");
   validate_poisson(m.mastic_nu);
-  const BurgersMacro reduced = m.mastic.shifted(TimeShift(shift));
-  const MicroConversion conv = MicroConversion::fcc_lattice(m.mastic_nu);
-  const double stone_friction = m.stone_friction < 0.0 ? m.friction : m.stone_friction;
-  AssignmentTable<RuttingLaw> table(2);
-  table.set(mastic_group, mastic_group,
-            RuttingLaw::make_first(film_params(mastic_params(reduced, diameter, m.mastic_nu, conv, 1.0, m.friction))));
-  table.set(mastic_group, aggregate_group,
-            RuttingLaw::make_first(film_params(
-                mastic_params(reduced, diameter, m.mastic_nu, conv, m.mastic_aggregate_factor, m.friction))));
-  table.set(aggregate_group, aggregate_group,
-            RuttingLaw::make_second(stone_law_params(m, fcc_law_length(m, diameter), stone_friction)));
-  return table;
+  RuttingTableScales scales;
+  scales.conversion = MicroConversion::fcc_lattice(m.mastic_nu);
+  scales.mastic_length = diameter;
+  scales.stone_length = fcc_law_length(m, diameter);
+  scales.diameter = diameter;
+  return rutting_table_with(m, shift, scales, 1, true);
 }
 
 // Each stone that holds a sphere is one body, numbered in the stones'
@@ -81,6 +86,18 @@ inline std::vector<int> stone_bodies3(const Specimen3& sp) {
   return body;
 }
 
+// Each sphere's group in the contact table: the mastic's, or, with the film
+// per contact, the bin of its reach (stone_reach3), as rutting_groups does
+// in 2D with one colour.
+inline std::vector<int> rutting_groups3(const Specimen3& sp, const RuttingMaterials& m) {
+  const std::size_t n = sp.spheres.centers.size();
+  const std::vector<double> reach = m.film_per_contact() ? stone_reach3(sp) : std::vector<double>(n, 0.0);
+  std::vector<int> group(n, mastic_group);
+  for (std::size_t i = 0; i < n; ++i)
+    if (sp.spheres.stone[i] >= 0) group[i] = stone_group(m, 0, reach[i]);
+  return group;
+}
+
 // What a 3D run gives beside RuttingResult's curve and DS: the spheres'
 // places at the end (mm), for the pictures and the VTK file.
 struct RuttingResult3 {
@@ -89,16 +106,58 @@ struct RuttingResult3 {
   double depth = 0.0;                                 // mm, the specimen's
 };
 
-template <class Space>
-RuttingResult3 run_rutting3(const Specimen3& sp, const WheelTracking& wt, const RuttingMaterials& mat,
-                            const RuttingNumerics& num, const Space& space = Space(),
-                            const std::function<void(double, long)>& progress = {}) {
+// Throws SimulationUnstable when a sphere of specimen e has left its mould
+// (check_inside_moulds in 2D says why).
+template <class Sim>
+void check_inside_moulds3(Sim& sim, const std::vector<Specimen3>& specimens, long step, double dt) {
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  for (int e = 0; e < static_cast<int>(specimens.size()); ++e) {
+    const Specimen3& sp = specimens[e];
+    const double width = sp.width * 1e-3, height = sp.height * 1e-3, r = sp.spheres.radius * 1e-3;
+    const auto [first, last] = sim.specimen_range(e);
+    for (int i = first; i < last; ++i) {
+      const Vec3 p = x(i);
+      if (p.x > -r && p.x < width + r && p.y > -r && p.y < 2.0 * height) continue;
+      char text[700];
+      std::snprintf(text, sizeof text,
+                    "vrut: the 3D rutting run became unstable by loading step %ld: sphere %d of specimen %d (%.200s) "
+                    "is at (%.4g, %.4g, %.4g) mm, outside its %g x %g mm mould. The time step is %.3g of "
+                    "sqrt(m_min / k_max); lower the time-step safety (RuttingNumerics::timestep_safety, 0.3 by "
+                    "default).",
+                    step, i - first, e, sp.name.c_str(), p.x * 1e3, p.y * 1e3, p.z * 1e3, sp.width, sp.height,
+                    dt / sim.critical_timestep());
+      throw SimulationUnstable(text, step);
+    }
+  }
+}
+
+// Runs the 3D test on every specimen of an ensemble side by side in one
+// Simulation, each with exactly the result of its own single run; the
+// specimens share one box (width, height, depth) and sphere size.
+// progress, stop and checkpoints as in run_rutting_ensemble (run.hpp).
+template <class Space, class Checkpoints = NoCheckpoints>
+std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& specimens, const WheelTracking& wt,
+                                                  const RuttingMaterials& mat, const RuttingNumerics& num,
+                                                  const Space& space = Space(),
+                                                  const std::function<void(double, long)>& progress = {},
+                                                  const std::function<bool()>& stop = {},
+                                                  Checkpoints* checkpoints = nullptr) {
+  const bool resuming = checkpoints != nullptr && checkpoints->resuming();
+  if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
   if (!(num.timestep_safety > 0.0 && num.timestep_safety <= 1.0))
     throw std::invalid_argument("time-step safety must lie in (0, 1]");
   if (num.samples < 10) throw std::invalid_argument("at least 10 samples");
-  wt.validate(sp.width * 1e-3);
-  const double width = sp.width * 1e-3, height = sp.height * 1e-3, depth = sp.depth * 1e-3;
-  const double r = sp.spheres.radius * 1e-3, d = 2.0 * r;
+  const int count = static_cast<int>(specimens.size());
+  const Specimen3& first_specimen = specimens.front();
+  for (const Specimen3& sp : specimens) {
+    wt.validate(sp.width * 1e-3);
+    if (sp.spheres.radius != first_specimen.spheres.radius || sp.width != first_specimen.width ||
+        sp.height != first_specimen.height || sp.depth != first_specimen.depth)
+      throw std::invalid_argument("a 3D ensemble's specimens must share one box and one sphere size");
+  }
+  const double width = first_specimen.width * 1e-3, height = first_specimen.height * 1e-3;
+  const double depth = first_specimen.depth * 1e-3;
+  const double r = first_specimen.spheres.radius * 1e-3, d = 2.0 * r;
   const auto table = rutting_table3(mat, d, num.shift);
   SimulationSettings3 settings;
   settings.gravity = {0.0, -wt.gravity, 0.0};
@@ -106,117 +165,174 @@ RuttingResult3 run_rutting3(const Specimen3& sp, const WheelTracking& wt, const 
   settings.box.periodic[2] = true;
   CentralDifference::params_type integrator;
   integrator.damping = num.settle_damping;
-  ParticleSet set = to_particle_set(sp, mat.mastic_density, mat.aggregate_density);
-  set.body = stone_bodies3(sp);
-  Simulation3<RuttingLaw, Space, CentralDifference, LoadControl, RuttingWallLaw> sim(set, table, settings, integrator,
+  ParticleSet all;
+  std::vector<std::pair<int, int>> bonds;
+  for (int e = 0; e < count; ++e) {
+    const Specimen3& sp = specimens[e];
+    const int offset = static_cast<int>(all.size());
+    ParticleSet set = to_particle_set(sp, mat.mastic_density, mat.aggregate_density);
+    set.body = stone_bodies3(sp);
+    set.group = rutting_groups3(sp, mat);
+    all.append_specimen(set);
+    for (const auto& [i, j] : sp.spheres.bonds) bonds.emplace_back(i + offset, j + offset);
+  }
+  Simulation3<RuttingLaw, Space, CentralDifference, LoadControl, RuttingWallLaw> sim(all, table, settings, integrator,
                                                                                      space);
-  RuttingResult3 out;
-  out.depth = sp.depth;
-  RuttingResult& res = out.result;
-  res.particles = set.size();
-  sim.bond_pairs(sp.spheres.bonds);
-  res.bonds = sim.intact_bonds(0);
+  std::vector<RuttingResult3> out(count);
+  sim.bond_pairs(bonds);
+  for (int e = 0; e < count; ++e) {
+    out[e].depth = specimens[e].depth;
+    out[e].result.bonds = sim.intact_bonds(e);
+    out[e].result.particles = specimens[e].spheres.centers.size();
+  }
 
-  // The mould: the floor and the two ends, endless along the periodic depth
+  // Each mould: the floor and the two ends, endless along the periodic depth
   // (plates far deeper than the specimen, which spheres may cross unwrapped).
   const auto wall_law = rutting_wall_params(mat, fcc_law_length(mat, d));
   const double k_wall = wall_law.normal.stiffness, endless = 50.0 * depth;
   const Vec3 mid{0.5 * width, height, 0.5 * depth};
-  sim.add_wall(Wall3{{mid.x, 0.0, mid.z}, {0.0, 0.0, endless}, {0.5 * width, 0.0, 0.0}, {}}, wall_law);
-  sim.add_wall(Wall3{{0.0, mid.y, mid.z}, {0.0, height, 0.0}, {0.0, 0.0, endless}, {}}, wall_law);
-  sim.add_wall(Wall3{{width, mid.y, mid.z}, {0.0, 0.0, endless}, {0.0, height, 0.0}, {}}, wall_law);
+  for (int e = 0; e < count; ++e) {
+    sim.add_wall(Wall3{{mid.x, 0.0, mid.z}, {0.0, 0.0, endless}, {0.5 * width, 0.0, 0.0}, {}}, wall_law, {}, e);
+    sim.add_wall(Wall3{{0.0, mid.y, mid.z}, {0.0, height, 0.0}, {0.0, 0.0, endless}, {}}, wall_law, {}, e);
+    sim.add_wall(Wall3{{width, mid.y, mid.z}, {0.0, 0.0, endless}, {0.0, height, 0.0}, {}}, wall_law, {}, e);
+  }
   const double dt = num.timestep_safety * sim.critical_timestep();
-  res.dt = dt;
 
-  const auto energy_reference = host_positions_copy(sim);
-  run_checking_energy(sim, num.settle_steps, dt, energy_reference);
+  // Settling (a resumed run reads where it had got to instead); the energy
+  // check counts the loads' work from here.
+  auto energy_reference = host_positions_copy(sim);
+  std::vector<double> plate_work(count, 0.0);
+  if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference);
 
-  // The plate on the highest sphere under it, as deep as the specimen (its
-  // pressure is its force over l times the depth), endless along it.
+  // The plates, each on the highest sphere under it, as deep as the specimen
+  // (its pressure is its force over l times the depth), endless along it.
   const double l = wt.contact_length();
   const double t_load = wt.loading_time() / num.shift;
   const long steps = static_cast<long>(std::ceil(t_load / dt));
   const long ramp_steps = std::max(1L, static_cast<long>(num.ramp_fraction * steps));
-  res.plate_x0 = 0.5 * (width - l);
-  res.plate_x1 = 0.5 * (width + l);
-  double top = 0.0;
-  {
-    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
-    for (std::size_t i = 0; i < set.size(); ++i)
-      if (x(i).x + r > res.plate_x0 && x(i).x - r < res.plate_x1) top = std::max(top, x(i).y + r);
-  }
+  const double plate_x0 = 0.5 * (width - l), plate_x1 = 0.5 * (width + l);
   // A dead load, as in 2D (run.hpp says why not a servo); its mass ten times
   // the least that keeps it stable on stiff contacts with every sphere of
   // the top layer under it (one per d^2).
   const double plate_mass = 10.0 * k_wall * (l * depth / (d * d)) * dt * dt / 4.0;
-  const int plate = sim.add_wall(Wall3{{0.5 * width, top, mid.z}, {0.5 * l, 0.0, 0.0}, {0.0, 0.0, endless}, {}},
-                                 wall_law, LoadControl::for_stress(0.0, l, depth, plate_mass, 0.0));
+  std::vector<double> top(count, 0.0);
+  std::vector<int> plate(count);
+  {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+    for (int e = 0; e < count; ++e) {
+      RuttingResult& res = out[e].result;
+      res.dt = dt;
+      res.plate_x0 = plate_x0;
+      res.plate_x1 = plate_x1;
+      const auto [first, last] = sim.specimen_range(e);
+      for (int i = first; i < last; ++i)
+        if (x(i).x + r > plate_x0 && x(i).x - r < plate_x1) top[e] = std::max(top[e], x(i).y + r);
+      plate[e] = sim.add_wall(Wall3{{mid.x, top[e], mid.z}, {0.5 * l, 0.0, 0.0}, {0.0, 0.0, endless}, {}}, wall_law,
+                              LoadControl::for_stress(0.0, l, depth, plate_mass, 0.0), e);
+    }
+  }
   auto ramp_to = [&](double fraction) {
-    sim.set_controller(plate, LoadControl::for_stress(wt.pressure * fraction, l, depth, plate_mass, 0.0));
+    for (int e = 0; e < count; ++e)
+      sim.set_controller(plate[e], LoadControl::for_stress(wt.pressure * fraction, l, depth, plate_mass, 0.0));
   };
   CentralDifference::params_type loading;
   loading.damping = num.damping;
   sim.set_integrator(loading);
 
-  auto start = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
-  std::vector<Vec3> start_positions(start.data(), start.data() + start.extent(0));  // a copy, not the view
+  Kokkos::View<Vec3*, typename Space::memory_space> start("loading_start", all.size());
+  Kokkos::deep_copy(start, sim.particles().position);
   const double to_minutes = wt.minutes / t_load;
   const auto begin = std::chrono::steady_clock::now();
   int next_sample = 1;
-  Vec3 last_impulse{}, last_plate_position = sim.wall(plate).centre;
-  double last_time = 0.0;
-  std::vector<double> plate_work(1, 0.0);
-  for (long s = 1; s <= steps; ++s) {
+  std::vector<Vec3> last_impulse(count), last_plate_position(count);
+  for (int e = 0; e < count; ++e) last_plate_position[e] = sim.wall(plate[e]).centre;
+  double last_time = 0.0, seconds_before = 0.0, checkpoint_seconds = 0.0;  // wall time before this process
+  long done = steps, last_done = 0;
+  // The whole state of the run between two steps (Simulation::visit_state).
+  auto visit = [&](auto& archive) {
+    sim.visit_state(archive);
+    archive.view("loading_start", start);
+    archive.value("loading_steps_done", last_done);
+    archive.value("next_sample", next_sample);
+    archive.value("last_sample_time", last_time);
+    archive.vector("last_plate_impulse", last_impulse);
+    archive.vector("plate_start_height", top);
+    archive.view("energy_reference", energy_reference);
+    archive.vector("plate_work", plate_work);
+    archive.vector("last_plate_position", last_plate_position);
+    checkpoint_seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    archive.value("wall_seconds", checkpoint_seconds);
+    for (int e = 0; e < count; ++e) archive.vector("specimen_" + std::to_string(e) + "_samples", out[e].result.samples);
+  };
+  if (resuming) {
+    checkpoints->load(visit);
+    seconds_before = checkpoint_seconds;
+  }
+  for (long s = last_done + 1; s <= steps; ++s) {
     if (s <= ramp_steps && (s % 50 == 1 || s == ramp_steps)) ramp_to(std::min(1.0, static_cast<double>(s) / ramp_steps));
     sim.step(dt);
     const double time = s * dt;
-    if (next_sample <= num.samples && (time >= t_load * next_sample / num.samples - 0.5 * dt || s == steps)) {
-      auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
-      for (std::size_t i = 0; i < set.size(); ++i) {
-        const Vec3 p = x(i);
-        if (p.x > -r && p.x < width + r && p.y > -r && p.y < 2.0 * height) continue;
-        {
-          char text[600];
-          std::snprintf(text, sizeof text,
-                        "vrut: the 3D rutting run became unstable by loading step %ld: sphere %zu is at (%.4g, %.4g, "
-                        "%.4g) mm, outside its %g x %g mm mould. The time step is %.3g of sqrt(m_min / k_max); lower "
-                        "the time-step safety (RuttingNumerics::timestep_safety, 0.3 by default).",
-                        s, i, p.x * 1e3, p.y * 1e3, p.z * 1e3, sp.width, sp.height, dt / sim.critical_timestep());
-          throw SimulationUnstable(text, s);
-        }
-      }
-      const Wall3 w = sim.wall(plate);
-      const Vec3 impulse = sim.wall_impulse(plate);
+    if (next_sample > num.samples || !(time >= t_load * next_sample / num.samples - 0.5 * dt || s == steps)) continue;
+    check_inside_moulds3(sim, specimens, s, dt);
+    for (int e = 0; e < count; ++e) {
+      const Wall3 w = sim.wall(plate[e]);
+      const Vec3 impulse = sim.wall_impulse(plate[e]);
       RuttingSample smp;
       smp.reduced_time = time;
       smp.minutes = time * to_minutes;
-      smp.deformation = top - w.centre.y;
-      smp.plate_pressure = -dot(impulse - last_impulse, inward_normal(w)) / (time - last_time) / (l * depth);
-      plate_work[0] -= dot(impulse - last_impulse, w.centre - last_plate_position) / (time - last_time);
-      last_plate_position = w.centre;
-      last_impulse = impulse;
-      res.samples.push_back(smp);
-      check_energy(sim, energy_reference, plate_work, s, dt);
-      last_time = time;
-      ++next_sample;
-      if (progress) progress(time / t_load, s);
+      smp.deformation = top[e] - w.centre.y;
+      smp.plate_pressure = -dot(impulse - last_impulse[e], inward_normal(w)) / (time - last_time) / (l * depth);
+      plate_work[e] -= dot(impulse - last_impulse[e], w.centre - last_plate_position[e]) / (time - last_time);
+      last_plate_position[e] = w.centre;
+      last_impulse[e] = impulse;
+      out[e].result.samples.push_back(smp);
+    }
+    check_energy(sim, energy_reference, plate_work, s, dt);
+    last_time = time;
+    ++next_sample;
+    if (progress) progress(time / t_load, s);
+    const bool stopping = stop && s < steps && stop();
+    if (checkpoints != nullptr && s < steps && (stopping || checkpoints->due())) {
+      last_done = s;
+      checkpoints->save(visit);
+    }
+    if (stopping) {
+      done = s;
+      for (auto& o : out) o.result.interrupted = true;
+      break;
     }
   }
   Kokkos::fence();
-  res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  res.steps = steps;
-  res.contacts = sim.active_contacts(0);
-  res.plate_y_final = sim.wall(plate).centre.y;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), start);
   auto g = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().group);
-  for (std::size_t i = 0; i < set.size(); ++i) {
-    out.final_positions.push_back(1e3 * Point3(x(i).x, x(i).y, x(i).z));
-    const Vec3 u = x(i) - start_positions[i];
-    out.displacement.push_back(1e3 * Point3(u.x, u.y, u.z));
-    res.group.push_back(g(i));
+  for (int e = 0; e < count; ++e) {
+    RuttingResult& res = out[e].result;
+    res.wall_seconds = seconds_before + seconds;
+    res.steps = done;
+    res.contacts = sim.active_contacts(e);
+    std::tie(res.stones, res.stone_pairs_touching) =
+        touching_stones(sim, specimens[e].spheres.stone, specimens[e].placement.stones.size(), e);
+    res.plate_y_final = sim.wall(plate[e]).centre.y;
+    const auto [first, last] = sim.specimen_range(e);
+    for (int i = first; i < last; ++i) {
+      out[e].final_positions.push_back(1e3 * Point3(x(i).x, x(i).y, x(i).z));
+      const Vec3 u = x(i) - x0(i);
+      out[e].displacement.push_back(1e3 * Point3(u.x, u.y, u.z));
+      res.group.push_back(g(i) == mastic_group ? mastic_group : aggregate_group);  // reach bins are stones
+    }
+    finish_deformation(res, wt);
   }
-  finish_deformation(res, wt);
   return out;
+}
+
+template <class Space, class Checkpoints = NoCheckpoints>
+RuttingResult3 run_rutting3(const Specimen3& sp, const WheelTracking& wt, const RuttingMaterials& mat,
+                            const RuttingNumerics& num, const Space& space = Space(),
+                            const std::function<void(double, long)>& progress = {},
+                            const std::function<bool()>& stop = {}, Checkpoints* checkpoints = nullptr) {
+  return run_rutting_ensemble3(std::vector<Specimen3>{sp}, wt, mat, num, space, progress, stop, checkpoints).front();
 }
 
 }  // namespace vrut

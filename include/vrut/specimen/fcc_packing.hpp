@@ -31,6 +31,7 @@ struct SpherePacking {
   std::vector<Eigen::Vector3d> centers;
   std::vector<int> stone;                      // the stone holding the centre, or mastic_site
   std::vector<std::pair<int, int>> bonds;      // touching pairs, across the periodic depth too, not across two stones
+  std::vector<std::pair<int, int>> stone_pairs;  // touching pairs of two different stones (where a film goes)
   int removed_for_voids = 0;                   // mastic spheres deleted at random for the air voids
   double air_void_target = 0.0, air_void_achieved = 0.0;  // the deleted spheres' volume over the box's
 };
@@ -119,13 +120,15 @@ SpherePacking pack_spheres_by(SiteOf site_of, double width, double height, int c
           const int t = slot[site(i2, j2, k2)];
           if (t < 0 || index[t] < 0) continue;
           const int a = index[s], b = index[t];
-          if (out.stone[a] >= 0 && out.stone[b] >= 0 && out.stone[a] != out.stone[b]) continue;
-          out.bonds.emplace_back(std::min(a, b), std::max(a, b));
+          const bool two_stones = out.stone[a] >= 0 && out.stone[b] >= 0 && out.stone[a] != out.stone[b];
+          (two_stones ? out.stone_pairs : out.bonds).emplace_back(std::min(a, b), std::max(a, b));
         }
       }
   // One cell deep, a site's neighbours before and behind are the same site.
-  std::sort(out.bonds.begin(), out.bonds.end());
-  out.bonds.erase(std::unique(out.bonds.begin(), out.bonds.end()), out.bonds.end());
+  for (auto* pairs : {&out.bonds, &out.stone_pairs}) {
+    std::sort(pairs->begin(), pairs->end());
+    pairs->erase(std::unique(pairs->begin(), pairs->end()), pairs->end());
+  }
   return out;
 }
 

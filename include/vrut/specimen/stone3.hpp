@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -219,6 +220,17 @@ inline bool stones_overlap(const Stone3& a, const Stone3& b, const Point3& shift
   ccd.max_iterations = 200;
   ccd.mpr_tolerance = 1e-10;
   return ccdMPRIntersect(&sa, &sb, &ccd) != 0;
+}
+
+// From x inside the stone, along the unit direction u: the distance to its
+// surface (the nearest face plane the ray leaves through).
+inline double distance_to_surface(const Stone3& s, const Point3& x, const Point3& u) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& p : s.planes) {
+    const double along = p.head<3>().dot(u);
+    if (along > 0.0) best = std::min(best, (p[3] - p.head<3>().dot(x)) / along);
+  }
+  return best;
 }
 
 }  // namespace vrut
