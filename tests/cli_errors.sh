@@ -191,13 +191,16 @@ rutting)
   expect "2" "needs about [0-9.e+]+ GiB of memory.*available" -- --width-mm 10000 --height-mm 10000 \
     --disk-radius-mm 0.05 --out bad
   [[ -e "$work/bad" ]] && { echo "FAIL: output folder bad written after an error"; failures=$((failures + 1)); }
-  # 3D: what it does not have yet is refused by name, and the 3D options in 2D.
+  # 3D: what it does not have is refused by name, and the 3D options in 2D.
   small3=(--dim 3 --gradation 1 --width-mm 40 --sphere-radius-mm 1.5 --shift 1e5 --settle-steps 300)
-  expect "2" "--seeds is not in the 3D test yet" -- "${small3[@]}" --seeds 1-2 --out bad3
-  expect "2" "--stone-film mean is not in the 3D test yet" -- "${small3[@]}" --stone-film mean --out bad3
-  expect "2" "--exact-stones is not in the 3D test yet" -- "${small3[@]}" --exact-stones --out bad3
+  expect "2" "film per contact, or through none" -- "${small3[@]}" --stone-film mean --out bad3
+  expect "2" "--exact-stones is not in the 3D test: its stones are rigid" -- "${small3[@]}" --exact-stones --out bad3
+  expect "2" "--conversion calibrated is not in the 3D test" -- "${small3[@]}" --conversion calibrated --out bad3
+  expect "2" "--image is not in the 3D test" -- "${small3[@]}" --image text.png --out bad3
   expect "2" "--disk-radius-mm is for 2D" -- "${small3[@]}" --disk-radius-mm 0.5 --out bad3
+  expect "2" "--mastic-aggregate-factor is the 2D model's" -- "${small3[@]}" --mastic-aggregate-factor 3 --out bad3
   expect "2" "--depth-mm is for the 3D test" -- --depth-mm 30 --out bad3
+  expect "2" "--mastic-aggregate-factor-3d is for the 3D test" -- --mastic-aggregate-factor-3d 3 --out bad3
   expect "2" "too small for its stones" -- "${small3[@]}" --depth-mm 20 --out bad3
   [[ -e "$work/bad3" ]] && { echo "FAIL: output folder bad3 written after an error"; failures=$((failures + 1)); }
   # The runs that succeed, which the sanitizer build (VRUT_ERRORS_ONLY) leaves out: too slow there.
@@ -217,6 +220,11 @@ rutting)
   expect "0" "3D: rut depth" -- --config run3d/config.ini --out run3d_again
   cmp -s "$work/run3d/deformation.csv" "$work/run3d_again/deformation.csv" ||
     { echo "FAIL: the 3D run's config.ini does not reproduce it"; failures=$((failures + 1)); }
+  # The film between stones (the default, per contact) is softer than the
+  # stones' spring alone at every overlap, as in 2D.
+  grep -q '"stone_film": "per-contact"' "$work/run3d/summary.json" ||
+    { echo "FAIL: the 3D summary does not say the stones meet through the film"; failures=$((failures + 1)); }
+  expect "0" "3D: rut depth" -- "${small3[@]}" --stone-film none --out run3d_none
   expect "0" "rut depth" -- "${small[@]}" --out run1
   for f in summary.json deformation.csv deformation.png specimen.png rut_forming.png displacement.png final.vtk config.ini; do
     [[ -s "$work/run1/$f" ]] || { echo "FAIL: no $f"; failures=$((failures + 1)); }
@@ -250,6 +258,7 @@ rutting)
   expect "1 2" "cannot be endless" -- "${small[@]}" --film-endless --out endless_per_contact
   expect "1 2" "stone-film" -- "${small[@]}" --stone-film thick --out bad_film
   deeper film no_film
+  deeper run3d run3d_none
   deeper endless film
   deeper run1 no_film
   deeper calibrated run1

@@ -8,7 +8,9 @@
 #include "../common/specimen_cli.hpp"
 #include "options.hpp"
 #include "outputs.hpp"
+#include "report.hpp"
 #include "run3d.hpp"
+#include "stop_signal.hpp"
 
 #include <vrut/analysis/rutting_ensemble.hpp>
 #include <vrut/analysis/standard_ds.hpp>
@@ -34,15 +36,6 @@
 #include <sstream>
 #include <iostream>
 
-namespace {
-
-// Ctrl-C (SIGINT) or SIGTERM: the run stops at its next sample and writes
-// what it has.
-volatile std::sig_atomic_t stop_signal = 0;
-extern "C" void on_stop_signal(int signal) { stop_signal = signal; }
-
-}  // namespace
-
 int main(int argc, char** argv) {
   ranks::Session session(argc, argv);  // mpirun -np K: K ranks share the seeds of an ensemble
   RunOptions given;
@@ -58,16 +51,7 @@ int main(int argc, char** argv) {
   given.seed_given = app.count("--seed") > 0;
 
   const int code = cli::guarded([&] {
-    if (given.dim == 3) {
-      if (!resume.empty()) throw std::invalid_argument("--resume is not in the 3D test yet");
-      if (session.size() > 1) throw std::invalid_argument("the 3D test runs on one MPI rank yet");
-      return run_rutting_3d(app, given);
-    }
-    // By value: a config file (config.ini) holds every option, at its default.
-    const specimen_cli::Specimen3Options defaults3;
-    if (given.o3.depth_mm != defaults3.depth_mm) throw std::invalid_argument("--depth-mm is for the 3D test (--dim 3)");
-    if (given.o3.sphere_radius_mm != defaults3.sphere_radius_mm)
-      throw std::invalid_argument("--sphere-radius-mm is for the 3D test (--dim 3)");
+    if (given.dim == 3 && session.size() > 1) throw std::invalid_argument("the 3D test runs on one MPI rank yet");
     namespace fs = std::filesystem;
     std::optional<vrut::CheckpointFile> checkpoint;
     RunOptions o = given;
@@ -95,6 +79,14 @@ int main(int argc, char** argv) {
       header["config_with_help"] = config_text;
       checkpoint.emplace(fs::path(given.out) / checkpoint_name, given.checkpoint_every, header);
     }
+    if (o.dim == 3) return run_rutting_3d(o, *checkpoint, config_text);
+    // By value: a config file (config.ini) holds every option, at its default.
+    const specimen_cli::Specimen3Options defaults3;
+    if (o.o3.depth_mm != defaults3.depth_mm) throw std::invalid_argument("--depth-mm is for the 3D test (--dim 3)");
+    if (o.o3.sphere_radius_mm != defaults3.sphere_radius_mm)
+      throw std::invalid_argument("--sphere-radius-mm is for the 3D test (--dim 3)");
+    if (o.mastic_aggregate_factor_3d != RunOptions().mastic_aggregate_factor_3d)
+      throw std::invalid_argument("--mastic-aggregate-factor-3d is for the 3D test (--dim 3)");
     o.convert();
     const auto& so = o.so;
     const auto& wt = o.wt;
@@ -185,8 +177,7 @@ int main(int argc, char** argv) {
     int used_threads = 1;
     vrut::ProgressBar bar(ensemble ? "loading " + std::to_string(seeds.size()) + " specimens" : "loading", 1000,
                           "permille", session.root() ? stderr : nullptr);
-    std::signal(SIGINT, on_stop_signal);
-    std::signal(SIGTERM, on_stop_signal);
+    std::optional<CatchStopSignals> catching(std::in_place);
     if (checkpoint->resuming()) std::fprintf(stderr, "resuming from %s\n", checkpoint->path().c_str());
     std::vector<vrut::RuttingResult> runs;
     try {
@@ -205,8 +196,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "\nthe last checkpoint before it is kept in %s\n", checkpoint->path().c_str());
       throw;
     }
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
+    catching.reset();
     const bool interrupted = runs.front().interrupted;
     // Rank 0 gathers every specimen's result, in the seeds' order.
     std::vector<ranks::SpecimenFacts> facts;
@@ -237,62 +227,12 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "\n%s at %.1f of %.0f minutes: writing the results so far\n",
                    stop_signal == SIGTERM ? "terminated (SIGTERM)" : "interrupted (Ctrl-C)", minutes_done, wt.minutes);
     const vrut::RuttingResult& res = runs.front();
-    const vrut::RuttingEnsembleSummary summary = vrut::summarize_rutting(runs, wt);
-
-    // deformation.csv and .png: one specimen's curve, or the ensemble's mean,
-    // interval and every specimen's curve.
-    std::ostringstream csv;
-    csv.precision(17);  // every double as it is: files compared bit for bit (resume, MPI) must differ where the runs do
-    csv << "minutes,reduced_time_s,deformation_mm,plate_pressure_mpa";
-    if (ensemble) {
-      csv << ",sd_mm,ci95_low_mm,ci95_high_mm";
-      for (auto seed : seeds) csv << ",seed_" << seed << "_mm";
-    }
-    csv << '\n';
-    std::vector<double> minutes, deformation, low, high;
-    const auto& mean = summary.mean_curve.samples;
-    for (std::size_t k = 0; k < mean.size(); ++k) {
-      csv << mean[k].minutes << ',' << mean[k].reduced_time << ',' << mean[k].deformation * 1e3 << ','
-          << mean[k].plate_pressure * 1e-6;
-      if (ensemble) {
-        csv << ',' << summary.deformation_sd[k] * 1e3 << ',' << summary.deformation_ci_low[k] * 1e3 << ','
-            << summary.deformation_ci_high[k] * 1e3;
-        for (const auto& r : runs) csv << ',' << r.samples[k].deformation * 1e3;
-      }
-      csv << '\n';
-      minutes.push_back(mean[k].minutes);
-      deformation.push_back(mean[k].deformation * 1e3);
-      low.push_back(summary.deformation_ci_low[k] * 1e3);
-      high.push_back(summary.deformation_ci_high[k] * 1e3);
-    }
-    output->write_text("deformation.csv", csv.str());
+    const RuttingReport report = report_runs(runs, wt, ensemble, interrupted);
+    const vrut::RuttingEnsembleSummary& summary = report.summary;
     // What was run, for the plot and the printout.
     const std::string what_was_run = from_images ? (images.size() > 1 ? "images" : "image " + images.front())
                                                  : "gradation " + ss.gradation.name;
-    vrut::PlotSpec spec;
-    spec.xlabel = "test time (min)";
-    spec.ylabel = "deformation (mm)";
-    std::vector<vrut::PlotSeries> series;
-    if (ensemble) {
-      spec.title = "Virtual wheel-tracking test, " + what_was_run + ", " +
-                   std::to_string(runs.size()) + " specimens";
-      vrut::PlotSeries band{"95 % interval of the mean", minutes, low, "filledcurves fs transparent solid 0.3 lc rgb '#4477aa'"};
-      band.y2 = high;
-      series.push_back(band);
-      for (std::size_t e = 0; e < runs.size(); ++e) {
-        vrut::PlotSeries one{e == 0 ? "each specimen" : "", {}, {}, "lines lw 1 lc rgb '#bbbbbb'"};
-        for (const auto& smp : runs[e].samples) {
-          one.x.push_back(smp.minutes);
-          one.y.push_back(smp.deformation * 1e3);
-        }
-        series.push_back(one);
-      }
-      series.push_back({"mean", minutes, deformation, "lines lw 3 lc rgb '#223388'"});
-    } else {
-      spec.title = "Virtual wheel-tracking test, " + what_was_run;
-      series.push_back({"rut depth under the plate", minutes, deformation});
-    }
-    vrut::write_plot_png(output->file("deformation.png").string(), spec, series);
+    write_deformation(*output, runs, report, seeds, ensemble, "Virtual wheel-tracking test, " + what_was_run);
 
     // Pictures and VTK of the first specimen.
     draw::specimen_png(sp, output->file("specimen.png").string());
@@ -300,48 +240,9 @@ int main(int argc, char** argv) {
     displacement_png(sp, res, output->file("displacement.png").string());
     final_vtk(sp, res, output->file("final.vtk").string());
 
-    // Each specimen's DS as the standard reports it, and their median with
-    // the censored ones counted as censored (Kaplan-Meier).
-    std::vector<vrut::ReportedDS> reported;
-    for (const auto& r : runs)
-      reported.push_back(interrupted ? vrut::ReportedDS{0.0, true}
-                                     : vrut::report_ds(r.dynamic_stability, r.dynamic_stability_is_lower_bound));
-    const vrut::ReportedDS reported_mean_curve =
-        interrupted ? vrut::ReportedDS{0.0, true}
-                    : vrut::report_ds(summary.mean_curve.dynamic_stability, summary.mean_curve.dynamic_stability_is_lower_bound);
-    const vrut::ReportedDS reported_median = vrut::censored_median(reported);
-    // Their 95 % intervals (analysis/standard_ds.hpp): the median's from the
-    // order statistics, the mean curve's from the mean window deformation.
-    const vrut::MedianInterval median_ci = vrut::median_interval(reported);
-    std::vector<double> window_mm;
-    for (const auto& r : runs) window_mm.push_back((r.deformation_final - r.deformation_at_ds_start) * 1e3);
-    const bool intervals = ensemble && !interrupted && runs.size() >= 2;
-    const vrut::DSInterval mean_curve_ci =
-        intervals ? vrut::mean_curve_ds_interval(window_mm, wt.ds_window_passes()) : vrut::DSInterval{};
-    if (ensemble) {
-      std::ostringstream per_seed;
-      per_seed.precision(17);
-      per_seed << "seed,disks,aggregates,aggregate_area_fraction,rut_depth_mm,deformation_45min_mm,"
-                  "deformation_60min_mm,dynamic_stability_passes_per_mm,dynamic_stability_is_lower_bound,"
-                  "deformation_resolution_mm,stones,stone_pairs_touching,steps,ds_standard_passes_per_mm,"
-                  "ds_standard_censored"
-               << (from_images ? ",image\n" : "\n");
-      for (std::size_t e = 0; e < runs.size(); ++e) {
-        per_seed << seeds[e] << ',' << runs[e].particles << ',' << facts[e].aggregates << ','
-                 << facts[e].aggregate_area_fraction << ',' << runs[e].deformation_final * 1e3 << ','
-                 << runs[e].deformation_at_ds_start * 1e3 << ',' << runs[e].deformation_final * 1e3 << ','
-                 << runs[e].dynamic_stability << ',' << (runs[e].dynamic_stability_is_lower_bound ? 1 : 0) << ','
-                 << runs[e].deformation_resolution * 1e3 << ',' << runs[e].stones << ','
-                 << runs[e].stone_pairs_touching << ',' << runs[e].steps << ',';
-        if (interrupted)
-          per_seed << "nan,nan";  // a run stopped before its end has no DS
-        else
-          per_seed << reported[e].value << ',' << (reported[e].censored ? 1 : 0);
-        if (from_images) per_seed << ',' << images[seeds[e] - 1];
-        per_seed << '\n';
-      }
-      output->write_text("seeds.csv", per_seed.str());
-    }
+    if (ensemble)
+      write_seeds_csv(*output, runs, report, seeds, facts, "disks,aggregates,aggregate_area_fraction", interrupted,
+                      from_images ? images : std::vector<std::string>{});
 
     nlohmann::json j;
     j["gradation"] = ss.gradation.name;
@@ -381,47 +282,11 @@ int main(int argc, char** argv) {
     j["dynamic_stability_is_lower_bound"] = summary.mean_curve.dynamic_stability_is_lower_bound;
     j["deformation_resolution_mm"] = summary.mean_curve.deformation_resolution * 1e3;
     // As JTG E20 T0719 writes it: capped at 6000 ("> 6000").
-    if (!interrupted) j["dynamic_stability_standard"] = standard_ds_json(reported_mean_curve);
+    if (!interrupted) j["dynamic_stability_standard"] = standard_ds_json(report.mean_curve);
     j["specimen"] = specimen_cli::specimen_summary(sp);
     j["interrupted"] = interrupted;
     j["minutes_done"] = minutes_done;
-    if (ensemble) {
-      nlohmann::json e;
-      e["seeds"] = seeds;
-      e["specimens"] = runs.size();
-      e["rut_depth_mm"] = statistics_json(summary.rut_depth);
-      e["deformation_45min_mm"] = statistics_json(summary.deformation_at_ds_start);
-      e["deformation_60min_mm"] = statistics_json(summary.deformation_final);
-      e["dynamic_stability_passes_per_mm"] = statistics_json(summary.dynamic_stability);
-      e["dynamic_stability_of_mean_curve"] = summary.mean_curve.dynamic_stability;
-      e["dynamic_stability_lower_bounds"] = summary.dynamic_stability_lower_bounds;
-      e["dynamic_stability_median_is_lower_bound"] = summary.dynamic_stability_median_is_lower_bound;
-      // The standard's values: the median with capped and unresolved DS
-      // as censored (Kaplan-Meier), and the mean curve's DS.
-      if (!interrupted) {
-        e["dynamic_stability_standard_median"] = standard_ds_json(reported_median);
-        e["dynamic_stability_standard_of_mean_curve"] = standard_ds_json(reported_mean_curve);
-        if (intervals && median_ci.defined)
-          e["dynamic_stability_standard_median_ci95"] = {{"low", standard_ds_json(median_ci.low)},
-                                                         {"high", standard_ds_json(median_ci.high)},
-                                                         {"coverage", median_ci.coverage}};
-        if (intervals)
-          e["dynamic_stability_standard_of_mean_curve_ci95"] = {{"low", standard_ds_json(mean_curve_ci.low)},
-                                                                {"high", standard_ds_json(mean_curve_ci.high)}};
-      }
-      nlohmann::json per = nlohmann::json::array();
-      for (std::size_t k = 0; k < runs.size(); ++k)
-        per.push_back({{"seed", seeds[k]},
-                       {"disks", runs[k].particles},
-                       {"rut_depth_mm", runs[k].deformation_final * 1e3},
-                       {"deformation_45min_mm", runs[k].deformation_at_ds_start * 1e3},
-                       {"dynamic_stability_passes_per_mm", runs[k].dynamic_stability},
-                       {"dynamic_stability_is_lower_bound", runs[k].dynamic_stability_is_lower_bound},
-                       {"dynamic_stability_standard", standard_ds_json(reported[k])},
-                       {"rank", facts[k].rank}});  // the MPI rank that ran it
-      e["per_seed"] = per;
-      j["ensemble"] = e;
-    }
+    if (ensemble) j["ensemble"] = ensemble_json(runs, report, seeds, facts, interrupted, "disks");
     output->write_text("summary.json", j.dump(2) + '\n');
     // The checkpoint of a stopped run goes with its partial results; a run
     // that ended needs none.
@@ -438,55 +303,10 @@ int main(int argc, char** argv) {
                   minutes_done, wt.minutes, out.c_str(), launcher.c_str(), out.c_str());
       return 128 + static_cast<int>(stop_signal);
     }
-    // A DS that is only a lower bound reads "above N", as a laboratory writes it.
-    auto ds_text = [](double ds, bool lower_bound) {
-      char text[64];
-      std::snprintf(text, sizeof text, "%s%.0f", lower_bound ? "above " : "", ds);
-      return std::string(text);
-    };
-    const auto& standard_text = vrut::reported_ds_text;  // "> 6000" past the cap, ours "above N"
-    const std::string speed = [&] {
-      char text[128];
-      std::snprintf(text, sizeof text, "%zu disks, %ld steps, %.0f s, %.3g particle-steps/s", disks, res.steps,
-                    wall_seconds, j["particle_steps_per_second"].get<double>());
-      return std::string(text);
-    }();
-    if (ensemble) {
-      const auto& r = summary.rut_depth;
-      const auto& d = summary.dynamic_stability;
-      const bool any_bound = summary.dynamic_stability_lower_bounds > 0;
-      std::printf("%s, %d specimens: rut depth %.2f mm at %.0f min (sd %.2f, 95 %% CI %.2f to %.2f), "
-                  "dynamic stability: mean %s (95 %% CI %s), median %s, of the mean curve %s passes/mm",
-                  what_was_run.c_str(), r.n, r.mean, wt.minutes, r.sd, r.ci_low, r.ci_high,
-                  ds_text(d.mean, any_bound).c_str(),
-                  any_bound ? "not known" : (ds_text(d.ci_low, false) + " to " + ds_text(d.ci_high, false)).c_str(),
-                  ds_text(d.median, summary.dynamic_stability_median_is_lower_bound).c_str(),
-                  ds_text(summary.mean_curve.dynamic_stability, summary.mean_curve.dynamic_stability_is_lower_bound).c_str());
-      if (any_bound)
-        std::printf("; %d of %d specimens deform less from minute %.0f to %.0f than their curves resolve, so their DS "
-                    "are lower bounds (seeds.csv)",
-                    summary.dynamic_stability_lower_bounds, r.n, wt.ds_from_minute, wt.minutes);
-      auto interval_text = [&](const vrut::ReportedDS& low, const vrut::ReportedDS& high) {
-        return " (95 % interval " + standard_text(low) + " to " + standard_text(high) + ")";
-      };
-      std::printf("; as the standard reports it (capped at %.0f): median %s%s (censored values counted as such), of "
-                  "the mean curve %s%s passes/mm",
-                  vrut::standard_ds_cap, standard_text(reported_median).c_str(),
-                  median_ci.defined ? interval_text(median_ci.low, median_ci.high).c_str() : "",
-                  standard_text(reported_mean_curve).c_str(),
-                  intervals ? interval_text(mean_curve_ci.low, mean_curve_ci.high).c_str() : "");
-      std::printf(" (%s)\nresults in %s\n", speed.c_str(), out.c_str());
-    } else {
-      std::printf("%s: rut depth %.2f mm at %.0f min, dynamic stability %s passes/mm",
-                  what_was_run.c_str(), res.deformation_final * 1e3, wt.minutes,
-                  ds_text(res.dynamic_stability, res.dynamic_stability_is_lower_bound).c_str());
-      if (res.dynamic_stability_is_lower_bound)
-        std::printf(" (from minute %.0f to %.0f the plate sank %.4f mm, less than the %.4f mm its curve resolves)",
-                    wt.ds_from_minute, wt.minutes, (res.deformation_final - res.deformation_at_ds_start) * 1e3,
-                    res.deformation_resolution * 1e3);
-      std::printf(", as the standard reports it %s", standard_text(reported_mean_curve).c_str());
-      std::printf(" (%s)\nresults in %s\n", speed.c_str(), out.c_str());
-    }
+    char speed[128];
+    std::snprintf(speed, sizeof speed, "%zu disks, %ld steps, %.0f s, %.3g particle-steps/s", disks, res.steps,
+                  wall_seconds, j["particle_steps_per_second"].get<double>());
+    print_result(what_was_run, runs, report, wt, ensemble, speed, out);
     return 0;
   });
   // A rank that failed takes the others down rather than leave them waiting.

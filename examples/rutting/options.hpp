@@ -35,8 +35,7 @@ struct RunOptions {
   double checkpoint_every = 0.0;
   // The mastic-aggregate factor in 3D: 2, the reading of two Burger's
   // spheres in series with one side rigid. The 2D one (4) was fitted on 2#
-  // with the films between stones, which 3D does not have yet; 3D is not
-  // calibrated.
+  // on 2D sections; 3D is not calibrated yet.
   double mastic_aggregate_factor_3d = 2.0;
   double e1 = 0, eta1 = 0, e2 = 0, eta2 = 0, pressure_mpa = 0, wheel_width_mm = 0, travel_mm = 0, aggregate_gpa = 0;
 
@@ -72,7 +71,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.set_config("--config", "", "read options from this file (INI/TOML, as written to DIR/config.ini)");
   app.allow_config_extras(false);  // an unknown key in a config file is an error
   app.add_option("--dim", o.dim, "2 (a section of disks, the method's) or 3 (a box of spheres, periodic along its "
-                 "depth; one specimen, not calibrated yet: docs/rutting.md)")
+                 "depth; not calibrated yet: docs/rutting.md)")
       ->check(CLI::IsMember({2, 3}))->capture_default_str();
   add_specimen_options(app, o.so);
   specimen_cli::add_specimen3_options(app, o.o3);

@@ -9,6 +9,7 @@
 // it measures rutting/result.hpp.
 #include <vrut/core/simulation.hpp>
 #include <vrut/protocol/energy_check.hpp>
+#include <vrut/rutting/loading.hpp>
 #include <vrut/rutting/materials.hpp>
 #include <vrut/rutting/result.hpp>
 #include <vrut/rutting/test.hpp>
@@ -43,7 +44,24 @@ struct RuttingNumerics {
   long settle_steps = 4000;          // under gravity, before the plate comes down
   double ramp_fraction = 0.02;       // of the loading time, for the plate force to rise
   int samples = 240;                 // points of the deformation curve
+
+  void validate() const {
+    if (!(timestep_safety > 0.0 && timestep_safety <= 1.0)) throw std::invalid_argument("time-step safety must lie in (0, 1]");
+    if (samples < 10) throw std::invalid_argument("at least 10 samples");
+  }
 };
+
+// The loading's time (the test's, reduced by alpha_T), its steps of dt, the
+// plates' load rising over ramp_fraction of them, and the samples.
+inline LoadingPlan loading_plan(const WheelTracking& wt, const RuttingNumerics& num, double dt) {
+  LoadingPlan plan;
+  plan.dt = dt;
+  plan.t_load = wt.loading_time() / num.shift;
+  plan.steps = static_cast<long>(std::ceil(plan.t_load / dt));
+  plan.ramp_steps = std::max(1L, static_cast<long>(num.ramp_fraction * plan.steps));
+  plan.samples = num.samples;
+  return plan;
+}
 
 // Throws SimulationUnstable when a disk has left its mould (through a wall or
 // over the top): a run with too large a time step can push disks through the
@@ -132,8 +150,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
                                                 Checkpoints* checkpoints = nullptr) {
   const bool resuming = checkpoints != nullptr && checkpoints->resuming();
   if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
-  if (!(num.timestep_safety > 0.0 && num.timestep_safety <= 1.0)) throw std::invalid_argument("time-step safety must lie in (0, 1]");
-  if (num.samples < 10) throw std::invalid_argument("at least 10 samples");
+  num.validate();
   const int count = static_cast<int>(specimens.size());
   for (const Specimen& sp : specimens) wt.validate(sp.width * 1e-3);
   const double t = wt.wheel_width;
@@ -189,16 +206,16 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   // Settling under gravity (a resumed run reads where it had got to instead).
   // The energy check (energy_check.hpp) counts the loads' work from here.
   auto energy_reference = host_positions_copy(sim);
-  std::vector<double> plate_work(count, 0.0);
+  LoadingState<Vec2> state(count);
+  std::vector<double>& top = state.top;
   if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference);
 
   // The plates, each on the highest disk under it; the load brings it down.
   const double l = wt.contact_length();
-  const double t_load = wt.loading_time() / num.shift;
-  const long steps = static_cast<long>(std::ceil(t_load / dt));
-  const long ramp_steps = std::max(1L, static_cast<long>(num.ramp_fraction * steps));
+  const LoadingPlan plan = loading_plan(wt, num, dt);
+  const double t_load = plan.t_load;
+  const long steps = plan.steps;
   auto host_x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
-  std::vector<double> top(count, 0.0);
   std::vector<int> plate(count);
   std::vector<double> plate_mass(count);
   for (int e = 0; e < count; ++e) {
@@ -251,27 +268,15 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   };
 
   const double to_minutes = wt.minutes / t_load;
-  const auto begin = std::chrono::steady_clock::now();
-  int next_sample = 1, next_snapshot = 1;
-  std::vector<Vec2> last_impulse(count), last_plate_position(count);
-  for (int e = 0; e < count; ++e) last_plate_position[e] = sim.wall(plate[e]).start;
-  double last_time = 0.0, seconds_before = 0.0, checkpoint_seconds = 0.0;  // wall time of the run before this process
-  long done = steps, last_done = 0;
+  int next_snapshot = 1;
+  for (int e = 0; e < count; ++e) state.last_plate_position[e] = sim.wall(plate[e]).start;
   // The whole state of the run between two steps, item by item (Simulation::visit_state).
   auto visit = [&](auto& archive) {
     sim.visit_state(archive);
     archive.view("loading_start", start);
-    archive.value("loading_steps_done", last_done);
-    archive.value("next_sample", next_sample);
+    state.visit(archive);
     archive.value("next_snapshot", next_snapshot);
-    archive.value("last_sample_time", last_time);
-    archive.vector("last_plate_impulse", last_impulse);
-    archive.vector("plate_start_height", top);
     archive.view("energy_reference", energy_reference);
-    archive.vector("plate_work", plate_work);
-    archive.vector("last_plate_position", last_plate_position);
-    checkpoint_seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-    archive.value("wall_seconds", checkpoint_seconds);
     for (int e = 0; e < count; ++e) {
       const std::string id = "specimen_" + std::to_string(e) + "_";
       archive.vector(id + "samples", results[e].samples);
@@ -289,62 +294,45 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
       }
     }
   };
+  state.begin = std::chrono::steady_clock::now();
   if (resuming) {
     checkpoints->load(visit);
-    seconds_before = checkpoint_seconds;
+    state.resumed();
   }
-  for (long s = last_done + 1; s <= steps; ++s) {
-    if (s <= ramp_steps && (s % 50 == 1 || s == ramp_steps))
-      ramp_to(std::min(1.0, static_cast<double>(s) / ramp_steps));
-    sim.step(dt);
-    const double time = s * dt;
+  auto take_snapshots = [&](long s) {
     if (next_snapshot <= 3 && (s >= steps * next_snapshot / 3)) {
       snapshot(next_snapshot / 3.0);
       ++next_snapshot;
     }
-    if (next_sample <= num.samples && (time >= t_load * next_sample / num.samples - 0.5 * dt || s == steps)) {
-      check_inside_moulds(sim, specimens, s, dt);
-      const std::vector<Wall>& walls = sim.all_walls();
-      const std::vector<Vec2> impulse = sim.all_wall_impulses();
-      for (int e = 0; e < count; ++e) {
-        const Wall& w = walls[plate[e]];
-        RuttingSample smp;
-        smp.reduced_time = time;
-        smp.minutes = time * to_minutes;
-        smp.deformation = top[e] - w.start.y;
-        // Mean pressure since the last sample, from the impulse on the plate.
-        smp.plate_pressure = -dot(impulse[plate[e]] - last_impulse[e], inward_normal(w)) / (time - last_time) / (l * t);
-        // The plate's work on the disks: its mean force on them times its travel.
-        plate_work[e] -= dot(impulse[plate[e]] - last_impulse[e], w.start - last_plate_position[e]) / (time - last_time);
-        last_plate_position[e] = w.start;
-        last_impulse[e] = impulse[plate[e]];
-        results[e].samples.push_back(smp);
-      }
-      check_energy(sim, energy_reference, plate_work, s, dt);
-      last_time = time;
-      ++next_sample;
-      if (progress) progress(time / t_load, s);
-      const bool stopping = stop && s < steps && stop();
-      if (checkpoints != nullptr && s < steps && (stopping || checkpoints->due())) {
-        last_done = s;
-        checkpoints->save(visit);
-      }
-      if (stopping) {
-        done = s;
-        if (next_snapshot <= 3) snapshot(time / t_load);
-        for (auto& r : results) r.interrupted = true;
-        break;
-      }
+  };
+  auto take_sample = [&](long s, double time) {
+    check_inside_moulds(sim, specimens, s, dt);
+    const std::vector<Wall>& walls = sim.all_walls();
+    const std::vector<Vec2> impulse = sim.all_wall_impulses();
+    for (int e = 0; e < count; ++e) {
+      const Wall& w = walls[plate[e]];
+      RuttingSample smp;
+      smp.reduced_time = time;
+      smp.minutes = time * to_minutes;
+      smp.deformation = top[e] - w.start.y;
+      smp.plate_pressure = state.plate_sample(e, impulse[plate[e]], w.start, inward_normal(w), time, l * t);
+      results[e].samples.push_back(smp);
     }
+    check_energy(sim, energy_reference, state.plate_work, s, dt);
+  };
+  const long done = run_loading(sim, plan, state, ramp_to, take_snapshots, take_sample, progress, stop, checkpoints, visit);
+  if (done < steps) {
+    if (next_snapshot <= 3) snapshot(static_cast<double>(done) * dt / t_load);
+    for (auto& r : results) r.interrupted = true;
   }
   Kokkos::fence();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  const double seconds = state.seconds();
   const std::vector<Wall>& walls = sim.all_walls();
   auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().velocity);
   auto g = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().group);
   for (int e = 0; e < count; ++e) {
     RuttingResult& res = results[e];
-    res.wall_seconds = seconds_before + seconds;
+    res.wall_seconds = seconds;
     res.steps = done;
     res.contacts = sim.active_contacts(e);
     std::tie(res.stones, res.stone_pairs_touching) =

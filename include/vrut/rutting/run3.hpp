@@ -23,6 +23,7 @@
 // stop, as in 2D (run.hpp).
 #include <vrut/core/simulation.hpp>
 #include <vrut/protocol/energy_check.hpp>
+#include <vrut/rutting/loading.hpp>
 #include <vrut/rutting/materials.hpp>
 #include <vrut/rutting/result.hpp>
 #include <vrut/rutting/run.hpp>
@@ -144,9 +145,7 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
                                                   Checkpoints* checkpoints = nullptr) {
   const bool resuming = checkpoints != nullptr && checkpoints->resuming();
   if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
-  if (!(num.timestep_safety > 0.0 && num.timestep_safety <= 1.0))
-    throw std::invalid_argument("time-step safety must lie in (0, 1]");
-  if (num.samples < 10) throw std::invalid_argument("at least 10 samples");
+  num.validate();
   const int count = static_cast<int>(specimens.size());
   const Specimen3& first_specimen = specimens.front();
   for (const Specimen3& sp : specimens) {
@@ -201,21 +200,21 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
   // Settling (a resumed run reads where it had got to instead); the energy
   // check counts the loads' work from here.
   auto energy_reference = host_positions_copy(sim);
-  std::vector<double> plate_work(count, 0.0);
+  LoadingState<Vec3> state(count);
+  std::vector<double>& top = state.top;
   if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference);
 
   // The plates, each on the highest sphere under it, as deep as the specimen
   // (its pressure is its force over l times the depth), endless along it.
   const double l = wt.contact_length();
-  const double t_load = wt.loading_time() / num.shift;
-  const long steps = static_cast<long>(std::ceil(t_load / dt));
-  const long ramp_steps = std::max(1L, static_cast<long>(num.ramp_fraction * steps));
+  const LoadingPlan plan = loading_plan(wt, num, dt);
+  const double t_load = plan.t_load;
+  const long steps = plan.steps;
   const double plate_x0 = 0.5 * (width - l), plate_x1 = 0.5 * (width + l);
   // A dead load, as in 2D (run.hpp says why not a servo); its mass ten times
   // the least that keeps it stable on stiff contacts with every sphere of
   // the top layer under it (one per d^2).
   const double plate_mass = 10.0 * k_wall * (l * depth / (d * d)) * dt * dt / 4.0;
-  std::vector<double> top(count, 0.0);
   std::vector<int> plate(count);
   {
     auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
@@ -242,74 +241,44 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
   Kokkos::View<Vec3*, typename Space::memory_space> start("loading_start", all.size());
   Kokkos::deep_copy(start, sim.particles().position);
   const double to_minutes = wt.minutes / t_load;
-  const auto begin = std::chrono::steady_clock::now();
-  int next_sample = 1;
-  std::vector<Vec3> last_impulse(count), last_plate_position(count);
-  for (int e = 0; e < count; ++e) last_plate_position[e] = sim.wall(plate[e]).centre;
-  double last_time = 0.0, seconds_before = 0.0, checkpoint_seconds = 0.0;  // wall time before this process
-  long done = steps, last_done = 0;
+  for (int e = 0; e < count; ++e) state.last_plate_position[e] = sim.wall(plate[e]).centre;
   // The whole state of the run between two steps (Simulation::visit_state).
   auto visit = [&](auto& archive) {
     sim.visit_state(archive);
     archive.view("loading_start", start);
-    archive.value("loading_steps_done", last_done);
-    archive.value("next_sample", next_sample);
-    archive.value("last_sample_time", last_time);
-    archive.vector("last_plate_impulse", last_impulse);
-    archive.vector("plate_start_height", top);
+    state.visit(archive);
     archive.view("energy_reference", energy_reference);
-    archive.vector("plate_work", plate_work);
-    archive.vector("last_plate_position", last_plate_position);
-    checkpoint_seconds = seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-    archive.value("wall_seconds", checkpoint_seconds);
     for (int e = 0; e < count; ++e) archive.vector("specimen_" + std::to_string(e) + "_samples", out[e].result.samples);
   };
+  state.begin = std::chrono::steady_clock::now();
   if (resuming) {
     checkpoints->load(visit);
-    seconds_before = checkpoint_seconds;
+    state.resumed();
   }
-  for (long s = last_done + 1; s <= steps; ++s) {
-    if (s <= ramp_steps && (s % 50 == 1 || s == ramp_steps)) ramp_to(std::min(1.0, static_cast<double>(s) / ramp_steps));
-    sim.step(dt);
-    const double time = s * dt;
-    if (next_sample > num.samples || !(time >= t_load * next_sample / num.samples - 0.5 * dt || s == steps)) continue;
+  auto take_sample = [&](long s, double time) {
     check_inside_moulds3(sim, specimens, s, dt);
     for (int e = 0; e < count; ++e) {
       const Wall3 w = sim.wall(plate[e]);
-      const Vec3 impulse = sim.wall_impulse(plate[e]);
       RuttingSample smp;
       smp.reduced_time = time;
       smp.minutes = time * to_minutes;
       smp.deformation = top[e] - w.centre.y;
-      smp.plate_pressure = -dot(impulse - last_impulse[e], inward_normal(w)) / (time - last_time) / (l * depth);
-      plate_work[e] -= dot(impulse - last_impulse[e], w.centre - last_plate_position[e]) / (time - last_time);
-      last_plate_position[e] = w.centre;
-      last_impulse[e] = impulse;
+      smp.plate_pressure = state.plate_sample(e, sim.wall_impulse(plate[e]), w.centre, inward_normal(w), time, l * depth);
       out[e].result.samples.push_back(smp);
     }
-    check_energy(sim, energy_reference, plate_work, s, dt);
-    last_time = time;
-    ++next_sample;
-    if (progress) progress(time / t_load, s);
-    const bool stopping = stop && s < steps && stop();
-    if (checkpoints != nullptr && s < steps && (stopping || checkpoints->due())) {
-      last_done = s;
-      checkpoints->save(visit);
-    }
-    if (stopping) {
-      done = s;
-      for (auto& o : out) o.result.interrupted = true;
-      break;
-    }
-  }
+    check_energy(sim, energy_reference, state.plate_work, s, dt);
+  };
+  const long done = run_loading(sim, plan, state, ramp_to, [](long) {}, take_sample, progress, stop, checkpoints, visit);
+  if (done < steps)
+    for (auto& o : out) o.result.interrupted = true;
   Kokkos::fence();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  const double seconds = state.seconds();
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
   auto x0 = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), start);
   auto g = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().group);
   for (int e = 0; e < count; ++e) {
     RuttingResult& res = out[e].result;
-    res.wall_seconds = seconds_before + seconds;
+    res.wall_seconds = seconds;
     res.steps = done;
     res.contacts = sim.active_contacts(e);
     std::tie(res.stones, res.stone_pairs_touching) =

@@ -1,0 +1,98 @@
+#pragma once
+// The loading that the 2D and 3D rutting runs share (run.hpp, run3.hpp):
+// the plates' load ramped up over the first steps, then the steps, with a
+// sample of the curve at each of `samples` even times, the progress, a stop
+// asked at each sample, and the checkpoints; and the state of all that
+// between two steps, which every checkpoint holds.
+#include <algorithm>
+#include <chrono>
+#include <functional>
+#include <vector>
+
+namespace vrut {
+
+struct LoadingPlan {
+  double dt = 0.0, t_load = 0.0;  // s, reduced
+  long steps = 0, ramp_steps = 1;
+  int samples = 0;
+};
+
+// Vector: the dimension's (Vec2, Vec3). One entry a specimen in each list.
+template <class Vector>
+struct LoadingState {
+  long last_done = 0;  // the steps done when the last checkpoint was written
+  int next_sample = 1;
+  double last_time = 0.0;                          // of the last sample, s
+  std::vector<double> top, plate_work;             // the plate's start height; its work on the particles so far
+  std::vector<Vector> last_impulse, last_plate_position;  // at the last sample
+  double seconds_before = 0.0, checkpoint_seconds = 0.0;  // wall time of the run before this process
+  std::chrono::steady_clock::time_point begin = std::chrono::steady_clock::now();
+
+  explicit LoadingState(int specimens)
+      : top(specimens, 0.0), plate_work(specimens, 0.0), last_impulse(specimens), last_plate_position(specimens) {}
+
+  double seconds() const {
+    return seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  }
+  template <class Archive>
+  void visit(Archive& archive) {
+    archive.value("loading_steps_done", last_done);
+    archive.value("next_sample", next_sample);
+    archive.value("last_sample_time", last_time);
+    archive.vector("last_plate_impulse", last_impulse);
+    archive.vector("plate_start_height", top);
+    archive.vector("plate_work", plate_work);
+    archive.vector("last_plate_position", last_plate_position);
+    checkpoint_seconds = seconds();
+    archive.value("wall_seconds", checkpoint_seconds);
+  }
+  // After a checkpoint was read: its wall time counts as this run's.
+  void resumed() { seconds_before = checkpoint_seconds; }
+  // At a sample at `time`: plate e's mean pressure since the last sample (its
+  // impulse over the time, along its inward normal, on `area`), returned;
+  // and its work on the particles, its mean force times its travel.
+  double plate_sample(int e, const Vector& impulse, const Vector& position, const Vector& inward, double time,
+                      double area) {
+    const Vector pushed = impulse - last_impulse[e];
+    const double pressure = -dot(pushed, inward) / (time - last_time) / area;
+    plate_work[e] -= dot(pushed, position - last_plate_position[e]) / (time - last_time);
+    last_plate_position[e] = position;
+    last_impulse[e] = impulse;
+    return pressure;
+  }
+};
+
+// Runs steps state.last_done + 1 .. plan.steps: ramp_to(fraction) sets the
+// plates' load while it rises, after_step(s) follows every step, and
+// take_sample(s, time) takes each sample (state.last_time is still the last
+// one's). At each sample, progress(fraction of the loading, steps), then
+// stop() is asked, and checkpoints->save(visit) writes the state when
+// checkpoints->due() or when stopping. Returns the last step done:
+// plan.steps, or the sample's step where stop() said true.
+template <class Sim, class Vector, class Ramp, class AfterStep, class TakeSample, class Checkpoints, class Visit>
+long run_loading(Sim& sim, const LoadingPlan& plan, LoadingState<Vector>& state, Ramp&& ramp_to,
+                 AfterStep&& after_step, TakeSample&& take_sample, const std::function<void(double, long)>& progress,
+                 const std::function<bool()>& stop, Checkpoints* checkpoints, Visit&& visit) {
+  for (long s = state.last_done + 1; s <= plan.steps; ++s) {
+    if (s <= plan.ramp_steps && (s % 50 == 1 || s == plan.ramp_steps))
+      ramp_to(std::min(1.0, static_cast<double>(s) / plan.ramp_steps));
+    sim.step(plan.dt);
+    const double time = s * plan.dt;
+    after_step(s);
+    const bool sample_due = time >= plan.t_load * state.next_sample / plan.samples - 0.5 * plan.dt || s == plan.steps;
+    if (state.next_sample > plan.samples || !sample_due) continue;
+    take_sample(s, time);
+    state.last_time = time;
+    ++state.next_sample;
+    if (progress) progress(time / plan.t_load, s);
+    const bool stopping = stop && s < plan.steps && stop();
+    if (checkpoints != nullptr && s < plan.steps && (stopping || checkpoints->due())) {
+      state.last_done = s;
+      checkpoints->save(visit);
+    }
+    if (stopping) return s;
+  }
+  return plan.steps;
+}
+
+}  // namespace vrut
