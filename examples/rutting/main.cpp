@@ -79,7 +79,10 @@ int main(int argc, char** argv) {
       header["config_with_help"] = config_text;
       checkpoint.emplace(fs::path(given.out) / checkpoint_name, given.checkpoint_every, header);
     }
-    if (o.dim == 3) return run_rutting_3d(o, *checkpoint, config_text);
+    if (o.dim == 3) {
+      if (session.size() > 1) throw std::invalid_argument("the 3D test runs on one MPI rank yet");
+      return run_rutting_3d(o, *checkpoint, config_text);
+    }
     // By value: a config file (config.ini) holds every option, at its default.
     const specimen_cli::Specimen3Options defaults3;
     if (o.o3.depth_mm != defaults3.depth_mm) throw std::invalid_argument("--depth-mm is for the 3D test (--dim 3)");

@@ -133,8 +133,9 @@ void check_inside_moulds3(Sim& sim, const std::vector<Specimen3>& specimens, lon
 }
 
 // Runs the 3D test on every specimen of an ensemble side by side in one
-// Simulation, each with exactly the result of its own single run; the
-// specimens share one box (width, height, depth) and sphere size.
+// Simulation; the specimens share one box (width, height, depth), sphere
+// size and time step, the smallest any of them needs (its lightest stone
+// sets it), so a specimen goes as its own single run would at that step.
 // progress, stop and checkpoints as in run_rutting_ensemble (run.hpp).
 template <class Space, class Checkpoints = NoCheckpoints>
 std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& specimens, const WheelTracking& wt,
