@@ -33,10 +33,12 @@ struct RunOptions {
   int threads = 0;
   bool force = false, exact_stones = false;
   double checkpoint_every = 0.0;
-  // The mastic-aggregate factor in 3D: 2, the reading of two Burger's
-  // spheres in series with one side rigid. The 2D one (4) was fitted on 2#
-  // on 2D sections; 3D is not calibrated yet.
-  double mastic_aggregate_factor_3d = 2.0;
+  // The mastic-aggregate factor in 3D: 4, the 2D calibration on 2#, carried
+  // over unchanged; with the film per contact it gives 3D's 2# 12.36 mm
+  // (11.20 to 13.51) against the laboratory's 12.2 (docs/validation.md, 3
+  // specimens of 1.5 mm spheres). 3D is not calibrated until the sphere
+  // size is chosen by a convergence study.
+  double mastic_aggregate_factor_3d = 4.0;
   double e1 = 0, eta1 = 0, e2 = 0, eta2 = 0, pressure_mpa = 0, wheel_width_mm = 0, travel_mm = 0, aggregate_gpa = 0;
 
   RunOptions() {
@@ -90,7 +92,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                  "mastic-aggregate contacts get this times the mastic-mastic values")
       ->check(cli::finite_positive())->capture_default_str()->group("Materials");
   app.add_option("--mastic-aggregate-factor-3d", o.mastic_aggregate_factor_3d,
-                 "3D (--dim 3): the same factor, not calibrated yet (2: two Burger's spheres in series, one side rigid)")
+                 "3D (--dim 3): the same factor (4: the 2D calibration on 2#, which brings 3D's 2# within 2 % of the "
+                 "laboratory; docs/validation.md)")
       ->check(cli::finite_positive())->capture_default_str()->group("Materials");
   app.add_option("--aggregate-modulus-gpa", o.aggregate_gpa, "aggregate Young's modulus (the stone springs 2 t E of --exact-stones)")->check(cli::finite_positive())
       ->capture_default_str()->group("Materials");
