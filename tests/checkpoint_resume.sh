@@ -4,7 +4,7 @@
 #    ends with the results of the run never stopped, bit for bit;
 #  - Ctrl-C leaves a valid checkpoint beside valid partial results, and
 #    resuming that gives the same results again;
-#  - the same for a 3D ensemble;
+#  - a 3D ensemble killed and resumed the same way;
 #  - a damaged checkpoint, and options given beside --resume, are refused.
 # Usage: checkpoint_resume.sh VRUT_RUTTING
 set -u
@@ -68,28 +68,19 @@ wait "$pid" 2>/dev/null
 grep -q '"specimens": 2' ensemble_killed/summary.json 2>/dev/null || fail "the resumed ensemble has not 2 specimens"
 same_results ensemble ensemble_killed
 
-# 3D: an ensemble killed between checkpoints, and one stopped by Ctrl-C,
-# each resumed (the second on one thread), end as the ensemble never stopped.
-small3=(--dim 3 --gradation 1 --width-mm 40 --sphere-radius-mm 1.5 --shift 1e5 --settle-steps 300 --seeds 1-2)
+# 3D: an ensemble killed between checkpoints and resumed on one thread ends
+# as the ensemble never stopped. (Ctrl-C takes the same path in 2D and 3D,
+# the stop that run_loading asks at each sample, tested above in 2D.)
+small3=(--dim 3 --gradation 1 --width-mm 40 --sphere-radius-mm 1.5 --shift 2e5 --settle-steps 300 --seeds 1-2)
 "$exe" "${small3[@]}" --out whole3 >whole3.out 2>&1 || fail "the whole 3D ensemble failed: $(tail -n 3 whole3.out)"
 "$exe" "${small3[@]}" --checkpoint-every 1 --out killed3 >killed3.out 2>&1 &
 pid=$!
 wait_for killed3/checkpoint.vrut || fail "no 3D checkpoint within 60 s"
-sleep 0.5
 kill -KILL "$pid"
 wait "$pid" 2>/dev/null
 [[ -s killed3/checkpoint.vrut && ! -e killed3/summary.json ]] || fail "3D, after SIGKILL: $(ls killed3)"
-"$exe" --resume killed3 >resumed3.out 2>&1 || fail "--resume of the 3D ensemble failed: $(tail -n 3 resumed3.out)"
+"$exe" --resume killed3 --threads 1 >resumed3.out 2>&1 || fail "--resume of the 3D ensemble failed: $(tail -n 3 resumed3.out)"
 same_results whole3 killed3
-"$exe" "${small3[@]}" --out stopped3 >stopped3.out 2>stopped3.err &
-pid=$!
-wait_for stopped3.err "loading.*[1-9]0 *%" || fail "no 3D progress within 60 s"
-kill -INT "$pid"
-wait "$pid"; code=$?
-[[ $code -eq 130 ]] || fail "Ctrl-C in 3D gave exit $code, not 130"
-grep -q '"interrupted": true' stopped3/summary.json 2>/dev/null || fail "no partial 3D summary.json"
-"$exe" --resume stopped3 --threads 1 >stopped3_2.out 2>&1 || fail "--resume in 3D after Ctrl-C failed: $(tail -n 3 stopped3_2.out)"
-same_results whole3 stopped3
 
 # Ctrl-C: partial results and a checkpoint, and how to go on.
 "$exe" "${small[@]}" --out stopped >stopped.out 2>stopped.err &
