@@ -63,23 +63,35 @@ inline LoadingPlan loading_plan(const WheelTracking& wt, const RuttingNumerics& 
   return plan;
 }
 
-// Throws SimulationUnstable when a disk has left its mould (through a wall or
-// over the top): a run with too large a time step can push disks through the
-// stiff walls without any single step jumping far enough for the engine's own
-// check. Called at every sample.
-template <class Sim>
-void check_inside_moulds(Sim& sim, const std::vector<Specimen>& specimens, long step, double dt) {
+// What check_inside_moulds says of a 2D specimen's particles; run3.hpp adds
+// the 3D ones (found at instantiation by their argument types).
+inline double mould_particle_radius_mm(const Specimen& s) { return s.disks.radius; }
+inline const char* mould_particle_word(const Specimen&) { return "disk"; }
+inline std::string mould_position_text(const Vec2& p) {
+  char text[80];
+  std::snprintf(text, sizeof text, "(%.4g, %.4g)", p.x * 1e3, p.y * 1e3);
+  return text;
+}
+
+// Throws SimulationUnstable when a disk (a sphere in 3D) has left its mould
+// (through a wall or over the top): a run with too large a time step can push
+// disks through the stiff walls without any single step jumping far enough
+// for the engine's own check. Called at every sample.
+template <class Sim, class SpecimenT>
+void check_inside_moulds(Sim& sim, const std::vector<SpecimenT>& specimens, long step, double dt) {
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
   for (int e = 0; e < static_cast<int>(specimens.size()); ++e) {
     const double w = specimens[e].width * 1e-3, h = specimens[e].height * 1e-3;
-    const double r = specimens[e].disks.radius * 1e-3;
+    const double r = mould_particle_radius_mm(specimens[e]) * 1e-3;
     const auto [first, last] = sim.specimen_range(e);
     for (int i = first; i < last; ++i) {
-      const Vec2 p = x(i);
-      if (!(p.x > -r && p.x < w + r && p.y > -r && p.y < 2.0 * h)) {
+      const auto p = x(i);
+      const double px = p.x, py = p.y;
+      if (!(px > -r && px < w + r && py > -r && py < 2.0 * h)) {
         char where[400];
-        std::snprintf(where, sizeof where, "disk %d of specimen %d (%.200s) is at (%.4g, %.4g) mm, outside its %g x %g mm mould",
-                      i - first, e, specimens[e].name.c_str(), p.x * 1e3, p.y * 1e3, w * 1e3, h * 1e3);
+        std::snprintf(where, sizeof where, "%s %d of specimen %d (%.200s) is at %s mm, outside its %g x %g mm mould",
+                      mould_particle_word(specimens[e]), i - first, e, specimens[e].name.c_str(),
+                      mould_position_text(p).c_str(), w * 1e3, h * 1e3);
         char text[700];
         std::snprintf(text, sizeof text,
                       "vrut: the rutting run became unstable by loading step %ld: %s. The time step is %.3g of "

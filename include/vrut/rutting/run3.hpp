@@ -107,29 +107,13 @@ struct RuttingResult3 {
   double depth = 0.0;                                 // mm, the specimen's
 };
 
-// Throws SimulationUnstable when a sphere of specimen e has left its mould
-// (check_inside_moulds in 2D says why).
-template <class Sim>
-void check_inside_moulds3(Sim& sim, const std::vector<Specimen3>& specimens, long step, double dt) {
-  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
-  for (int e = 0; e < static_cast<int>(specimens.size()); ++e) {
-    const Specimen3& sp = specimens[e];
-    const double width = sp.width * 1e-3, height = sp.height * 1e-3, r = sp.spheres.radius * 1e-3;
-    const auto [first, last] = sim.specimen_range(e);
-    for (int i = first; i < last; ++i) {
-      const Vec3 p = x(i);
-      if (p.x > -r && p.x < width + r && p.y > -r && p.y < 2.0 * height) continue;
-      char text[700];
-      std::snprintf(text, sizeof text,
-                    "vrut: the 3D rutting run became unstable by loading step %ld: sphere %d of specimen %d (%.200s) "
-                    "is at (%.4g, %.4g, %.4g) mm, outside its %g x %g mm mould. The time step is %.3g of "
-                    "sqrt(m_min / k_max); lower the time-step safety (RuttingNumerics::timestep_safety, 0.3 by "
-                    "default).",
-                    step, i - first, e, sp.name.c_str(), p.x * 1e3, p.y * 1e3, p.z * 1e3, sp.width, sp.height,
-                    dt / sim.critical_timestep());
-      throw SimulationUnstable(text, step);
-    }
-  }
+// check_inside_moulds (run.hpp) on a 3D specimen's spheres.
+inline double mould_particle_radius_mm(const Specimen3& s) { return s.spheres.radius; }
+inline const char* mould_particle_word(const Specimen3&) { return "sphere"; }
+inline std::string mould_position_text(const Vec3& p) {
+  char text[120];
+  std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", p.x * 1e3, p.y * 1e3, p.z * 1e3);
+  return text;
 }
 
 // Runs the 3D test on every specimen of an ensemble side by side in one
@@ -257,7 +241,7 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
     state.resumed();
   }
   auto take_sample = [&](long s, double time) {
-    check_inside_moulds3(sim, specimens, s, dt);
+    check_inside_moulds(sim, specimens, s, dt);
     for (int e = 0; e < count; ++e) {
       const Wall3 w = sim.wall(plate[e]);
       RuttingSample smp;
