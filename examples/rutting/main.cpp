@@ -231,7 +231,6 @@ int main(int argc, char** argv) {
                    stop_signal == SIGTERM ? "terminated (SIGTERM)" : "interrupted (Ctrl-C)", minutes_done, wt.minutes);
     const vrut::RuttingResult& res = runs.front();
     const RuttingReport report = report_runs(runs, wt, ensemble, interrupted);
-    const vrut::RuttingEnsembleSummary& summary = report.summary;
     // What was run, for the plot and the printout.
     const std::string what_was_run = from_images ? (images.size() > 1 ? "images" : "image " + images.front())
                                                  : "gradation " + ss.gradation.name;
@@ -255,18 +254,9 @@ int main(int argc, char** argv) {
     j["shift_factor"] = num.shift;
     j["conversion"] = conversion;
     j["particles"] = disks;
-    j["bonds"] = res.bonds;
-    j["contacts"] = res.contacts;
-    // The skeleton at the end, of the first specimen: stones, the pairs of
-    // them touching, and touching neighbours per stone (2 pairs / stones).
-    j["stones"] = res.stones;
-    j["stone_pairs_touching"] = res.stone_pairs_touching;
-    j["stone_neighbours_per_stone"] = res.stones > 0 ? 2.0 * res.stone_pairs_touching / res.stones : 0.0;
     j["rigid_stones"] = mat.rigid_stones;
     j["stone_film"] = stone_film;
     j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
-    j["steps"] = res.steps;
-    j["reduced_dt_s"] = res.dt;
     j["wall_seconds"] = wall_seconds;
     j["mpi_ranks"] = session.size();
     j["backend"] = backend;
@@ -274,21 +264,9 @@ int main(int argc, char** argv) {
     j["particle_steps_per_second"] = disks * static_cast<double>(res.steps) / wall_seconds;
     j["contact_length_mm"] = wt.contact_length() * 1e3;
     j["loading_time_s"] = wt.loading_time();
-    // For an ensemble: the means over the specimens (the DS: of the mean curve),
-    // the first specimen's bonds, contacts and description.
-    j["deformation_45min_mm"] = summary.deformation_at_ds_start.mean;
-    j["deformation_60min_mm"] = summary.deformation_final.mean;
-    j["rut_depth_mm"] = summary.rut_depth.mean;
-    j["dynamic_stability_passes_per_mm"] = summary.mean_curve.dynamic_stability;
-    // Where the 45-60 min deformation is below what the curve resolves, the DS
-    // is a lower bound: "above" the value given.
-    j["dynamic_stability_is_lower_bound"] = summary.mean_curve.dynamic_stability_is_lower_bound;
-    j["deformation_resolution_mm"] = summary.mean_curve.deformation_resolution * 1e3;
-    // As JTG E20 T0719 writes it: capped at 6000 ("> 6000").
-    if (!interrupted) j["dynamic_stability_standard"] = standard_ds_json(report.mean_curve);
+    // For an ensemble: the first specimen's bonds, contacts and description.
+    add_shared_summary(j, res, report, interrupted, minutes_done);
     j["specimen"] = specimen_cli::specimen_summary(sp);
-    j["interrupted"] = interrupted;
-    j["minutes_done"] = minutes_done;
     if (ensemble) j["ensemble"] = ensemble_json(runs, report, seeds, facts, interrupted, "disks");
     output->write_text("summary.json", j.dump(2) + '\n');
     // The checkpoint of a stopped run goes with its partial results; a run

@@ -185,6 +185,35 @@ nlohmann::json ensemble_json(const std::vector<vrut::RuttingResult>& runs, const
   return e;
 }
 
+// summary.json's keys that the 2D and the 3D run share: the skeleton at the
+// end, of the first specimen (stones, the pairs of them touching, touching
+// neighbours per stone: 2 pairs / stones); the steps; the means over the
+// specimens (the DS: of the mean curve); whether the run was stopped.
+template <class RunFacts>
+void add_shared_summary(nlohmann::json& j, const RunFacts& res, const RuttingReport& report, bool interrupted,
+                        double minutes_done) {
+  j["bonds"] = res.bonds;
+  j["contacts"] = res.contacts;
+  j["stones"] = res.stones;
+  j["stone_pairs_touching"] = res.stone_pairs_touching;
+  j["stone_neighbours_per_stone"] = res.stones > 0 ? 2.0 * res.stone_pairs_touching / res.stones : 0.0;
+  j["steps"] = res.steps;
+  j["reduced_dt_s"] = res.dt;
+  const auto& summary = report.summary;
+  j["deformation_45min_mm"] = summary.deformation_at_ds_start.mean;
+  j["deformation_60min_mm"] = summary.deformation_final.mean;
+  j["rut_depth_mm"] = summary.rut_depth.mean;
+  j["dynamic_stability_passes_per_mm"] = summary.mean_curve.dynamic_stability;
+  // Where the 45-60 min deformation is below what the curve resolves, the DS
+  // is a lower bound: "above" the value given.
+  j["dynamic_stability_is_lower_bound"] = summary.mean_curve.dynamic_stability_is_lower_bound;
+  j["deformation_resolution_mm"] = summary.mean_curve.deformation_resolution * 1e3;
+  // As JTG E20 T0719 writes it: capped at 6000 ("> 6000").
+  if (!interrupted) j["dynamic_stability_standard"] = standard_ds_json(report.mean_curve);
+  j["interrupted"] = interrupted;
+  j["minutes_done"] = minutes_done;
+}
+
 // The line printed at the end of a run that went to its end: what was run,
 // the rut depth and DS (an ensemble's statistics and intervals), and how
 // fast (`speed`: particles, steps, seconds).

@@ -187,18 +187,10 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   j["shift_factor"] = num.shift;
   j["conversion"] = "fcc_lattice";
   j["particles"] = all_spheres;
-  j["bonds"] = res.bonds;
-  j["contacts"] = res.contacts;
-  // The skeleton at the end, of the first specimen (as in 2D).
-  j["stones"] = res.stones;
-  j["stone_pairs_touching"] = res.stone_pairs_touching;
-  j["stone_neighbours_per_stone"] = res.stones > 0 ? 2.0 * res.stone_pairs_touching / res.stones : 0.0;
   j["rigid_stones"] = true;
   j["stone_film"] = o.stone_film;
   j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
   j["calibrated"] = false;  // 3D has no calibration on 2# yet
-  j["steps"] = res.steps;
-  j["reduced_dt_s"] = res.dt;
   j["wall_seconds"] = wall_seconds;
   j["backend"] = o.backend;
   j["threads"] = used_threads;
@@ -206,18 +198,8 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   j["contact_length_mm"] = wt.contact_length() * 1e3;
   j["plate_mm"] = {wt.contact_length() * 1e3, sp.depth};
   j["loading_time_s"] = wt.loading_time();
-  // For an ensemble: the means over the specimens (the DS: of the mean curve).
-  const auto& summary = report.summary;
-  j["deformation_45min_mm"] = summary.deformation_at_ds_start.mean;
-  j["deformation_60min_mm"] = summary.deformation_final.mean;
-  j["rut_depth_mm"] = summary.rut_depth.mean;
-  j["dynamic_stability_passes_per_mm"] = summary.mean_curve.dynamic_stability;
-  j["dynamic_stability_is_lower_bound"] = summary.mean_curve.dynamic_stability_is_lower_bound;
-  j["deformation_resolution_mm"] = summary.mean_curve.deformation_resolution * 1e3;
-  if (!interrupted) j["dynamic_stability_standard"] = standard_ds_json(report.mean_curve);
+  add_shared_summary(j, res, report, interrupted, minutes_done);
   j["specimen"] = specimen_cli::specimen3_summary(sp);
-  j["interrupted"] = interrupted;
-  j["minutes_done"] = minutes_done;
   if (ensemble) j["ensemble"] = ensemble_json(runs, report, seeds, facts, interrupted, "spheres");
   output.write_text("summary.json", j.dump(2) + '\n');
   // The checkpoint of a stopped run goes with its partial results.
