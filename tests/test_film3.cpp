@@ -2,6 +2,8 @@
 // carried into 3D): the distance to a stone's surface against a cube worked
 // by hand, each stone sphere's reach against an independent measure, and
 // the 3D contact table against the mastic's and the stones' rules.
+#include "small_box3.hpp"
+
 #include <vrut/rutting/run3.hpp>
 #include <vrut/specimen/stone_reach3.hpp>
 
@@ -22,13 +24,8 @@ vrut::Stone3 cube_at(const Point3& c) {
 }
 
 vrut::Specimen3 small_specimen(int mix, std::uint64_t seed) {
-  vrut::SpecimenSettings3 s;
-  s.gradation = vrut::builtin_gradation(mix);
-  s.placement.width = 40.0;
-  s.placement.height = 50.0;
-  s.placement.depth = 40.0;
+  vrut::SpecimenSettings3 s = vrut_test::small_box3(mix, seed, 40.0);
   s.sphere_radius = 1.5;
-  s.seed = seed;
   return vrut::generate_specimen3(s);
 }
 

@@ -2,6 +2,7 @@
 // convex hulls against solids worked by hand, the overlap test against an
 // independent one, and placed stones that share no point.
 #include "band_checks.hpp"
+#include "small_box3.hpp"
 
 #include <vrut/specimen/specimen3.hpp>
 
@@ -22,16 +23,6 @@ int stones_holding(const vrut::Placement3& p, const Point3& x) {
   for (const auto& s : p.stones)
     for (double image : {0.0, -p.depth, p.depth}) n += s.shape.contains(x + Point3(0.0, 0.0, image));
   return n;
-}
-
-vrut::SpecimenSettings3 small_box(int mix, std::uint64_t seed) {
-  vrut::SpecimenSettings3 s;
-  s.gradation = vrut::builtin_gradation(mix);
-  s.placement.width = 60.0;
-  s.placement.height = 50.0;
-  s.placement.depth = 40.0;
-  s.seed = seed;
-  return s;
 }
 
 }  // namespace
@@ -148,7 +139,7 @@ TEST_CASE("3D stones: the overlap test agrees with separating planes and shared 
 
 TEST_CASE("3D placement: stones share no point, across the periodic depth too", "[specimen3][placement]") {
   for (int mix : {1}) {
-    const auto s = small_box(mix, 3);
+    const auto s = vrut_test::small_box3(mix, 3);
     std::mt19937_64 rng(s.seed);
     vrut::PlacementSettings3 ps = s.placement;
     const vrut::Placement3 p = vrut::place_stones3(vrut::stereology(s.gradation, s.mix), ps, rng);
@@ -181,7 +172,7 @@ TEST_CASE("3D placement: stones share no point, across the periodic depth too", 
 }
 
 TEST_CASE("3D specimen: a sphere belongs to the stone that holds its centre", "[specimen3][placement]") {
-  auto s = small_box(1, 4);
+  auto s = vrut_test::small_box3(1, 4);
   s.sphere_radius = 1.0;
   const vrut::Specimen3 sp = vrut::generate_specimen3(s);
   CHECK(sp.depth == Approx(vrut::fcc_cells_deep(40.0, 1.0) * vrut::fcc_cell(1.0)));
@@ -231,7 +222,7 @@ void check_even_fill(int mix, double width) {
   std::mt19937_64 points(77);
   int jammed = 0;
   for (int seed = 1; seed <= seeds; ++seed) {
-    auto s = small_box(mix, seed);
+    auto s = vrut_test::small_box3(mix, seed);
     s.placement.width = width;
     s.sphere_radius = 2.0;  // the lattice is not looked at here
     const vrut::Specimen3 sp = vrut::generate_specimen3(s);
