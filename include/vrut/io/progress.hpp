@@ -3,6 +3,7 @@
 // redraws one line; otherwise (logs, CI) it prints a line every 10 %.
 // Host-only.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <unistd.h>
@@ -49,10 +50,34 @@ class ProgressBar {
     const int width = 30, filled = static_cast<int>(width * static_cast<double>(done) / total_);
     std::string bar(filled, '#');
     bar.resize(width, '.');
-    std::fprintf(out_, "%s%s [%s] %3d%%  %.0f %s/s  ETA %.0f s%s", tty_ ? "\r" : "", label_.c_str(), bar.c_str(),
-                 static_cast<int>(100.0 * done / total_), rate, unit_.c_str(), eta, tty_ ? "   " : "\n");
+    std::fprintf(out_, "%s%s [%s] %3d%%  %s %s/s  ETA %s%s", tty_ ? "\r" : "", label_.c_str(), bar.c_str(),
+                 static_cast<int>(100.0 * done / total_), rate_text(rate).c_str(), unit_.c_str(),
+                 duration_text(eta).c_str(), tty_ ? "   " : "\n");
     std::fflush(out_);
   }
+
+ public:
+  // A rate with the digits it needs: 8823, 41.5, 0.24 (a long run's
+  // permille a second would otherwise read 0).
+  static std::string rate_text(double rate) {
+    char text[40];
+    std::snprintf(text, sizeof text, rate >= 100.0 ? "%.0f" : rate >= 1.0 ? "%.1f" : "%.2g", rate);
+    return text;
+  }
+  // A time left as a person reads it: 45 s, 12 min, 2 h 05 min.
+  static std::string duration_text(double seconds) {
+    char text[40];
+    if (seconds < 120.0)
+      std::snprintf(text, sizeof text, "%.0f s", seconds);
+    else if (seconds < 7200.0)
+      std::snprintf(text, sizeof text, "%.0f min", seconds / 60.0);
+    else
+      std::snprintf(text, sizeof text, "%.0f h %02.0f min", std::floor(seconds / 3600.0),
+                    std::floor(std::fmod(seconds, 3600.0) / 60.0));
+    return text;
+  }
+
+ private:
 
   std::string label_, unit_;
   long total_;

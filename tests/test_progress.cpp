@@ -1,0 +1,37 @@
+// The progress bar's numbers as a person reads them (io/progress.hpp): a
+// slow run's rate keeps its digits, a long wait reads in minutes and hours.
+#include <vrut/io/progress.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+#include <string>
+
+TEST_CASE("the progress bar writes a slow rate with its digits and a long ETA in minutes and hours",
+          "[progress][unit]") {
+  using vrut::ProgressBar;
+  // A five-specimen 3D run advances about a quarter permille a second.
+  CHECK(ProgressBar::rate_text(0.2417) == "0.24");
+  CHECK(ProgressBar::rate_text(0.0) == "0");
+  CHECK(ProgressBar::rate_text(41.53) == "41.5");
+  CHECK(ProgressBar::rate_text(8823.4) == "8823");
+  CHECK(ProgressBar::duration_text(45.2) == "45 s");
+  CHECK(ProgressBar::duration_text(3277.0) == "55 min");    // 54.6 min
+  CHECK(ProgressBar::duration_text(7500.0) == "2 h 05 min");  // 2 h 5 min 0 s
+  CHECK(ProgressBar::duration_text(9017.0) == "2 h 30 min");  // 2 h 30 min 17 s
+  // Written to a file, a bar prints a line every 10 %, with both.
+  std::FILE* f = std::tmpfile();
+  REQUIRE(f != nullptr);
+  {
+    ProgressBar bar("loading", 1000, "permille", f);
+    bar.update(150);
+  }
+  std::rewind(f);
+  char line[200] = {};
+  REQUIRE(std::fgets(line, sizeof line, f) != nullptr);
+  std::fclose(f);
+  const std::string text = line;
+  CHECK(text.rfind("loading [####", 0) == 0);
+  CHECK(text.find(" 15%") != std::string::npos);
+  CHECK(text.find(" permille/s  ETA ") != std::string::npos);
+}
