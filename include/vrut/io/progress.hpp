@@ -41,22 +41,6 @@ class ProgressBar {
 
   double elapsed_seconds() const { return std::chrono::duration<double>(clock::now() - start_).count(); }
 
- private:
-  using clock = std::chrono::steady_clock;
-  void draw(long done, clock::time_point now) {
-    const double seconds = std::chrono::duration<double>(now - start_).count();
-    const double rate = seconds > 0.0 ? done / seconds : 0.0;
-    const double eta = rate > 0.0 ? (total_ - done) / rate : 0.0;
-    const int width = 30, filled = static_cast<int>(width * static_cast<double>(done) / total_);
-    std::string bar(filled, '#');
-    bar.resize(width, '.');
-    std::fprintf(out_, "%s%s [%s] %3d%%  %s %s/s  ETA %s%s", tty_ ? "\r" : "", label_.c_str(), bar.c_str(),
-                 static_cast<int>(100.0 * done / total_), rate_text(rate).c_str(), unit_.c_str(),
-                 duration_text(eta).c_str(), tty_ ? "   " : "\n");
-    std::fflush(out_);
-  }
-
- public:
   // A rate with the digits it needs: 8823, 41.5, 0.24 (a long run's
   // permille a second would otherwise read 0).
   static std::string rate_text(double rate) {
@@ -78,6 +62,19 @@ class ProgressBar {
   }
 
  private:
+  using clock = std::chrono::steady_clock;
+  void draw(long done, clock::time_point now) {
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    const double rate = seconds > 0.0 ? done / seconds : 0.0;
+    const double eta = rate > 0.0 ? (total_ - done) / rate : 0.0;
+    const int width = 30, filled = static_cast<int>(width * static_cast<double>(done) / total_);
+    std::string bar(filled, '#');
+    bar.resize(width, '.');
+    std::fprintf(out_, "%s%s [%s] %3d%%  %s %s/s  ETA %s%s", tty_ ? "\r" : "", label_.c_str(), bar.c_str(),
+                 static_cast<int>(100.0 * done / total_), rate_text(rate).c_str(), unit_.c_str(),
+                 duration_text(eta).c_str(), tty_ ? "   " : "\n");
+    std::fflush(out_);
+  }
 
   std::string label_, unit_;
   long total_;
