@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <cstdio>
 #include <string>
 
@@ -34,4 +35,28 @@ TEST_CASE("the progress bar writes a slow rate with its digits and a long ETA in
   CHECK(text.rfind("loading [####", 0) == 0);
   CHECK(text.find(" 15%") != std::string::npos);
   CHECK(text.find(" permille/s  ETA ") != std::string::npos);
+}
+
+// A run resumed at 49 % (its first report) that then does 10 permille in
+// 10 s goes at 1 permille a second: 500 permille left is 500 s, "8 min". A
+// rate from the bar's start would count the 490 permille done before the
+// resume as done in no time (the ETA of "15 s" a resumed 45-minute run
+// showed).
+TEST_CASE("a resumed run's rate and ETA count from its first report", "[progress][unit]") {
+  using vrut::ProgressBar;
+  std::FILE* f = std::tmpfile();
+  REQUIRE(f != nullptr);
+  {
+    ProgressBar bar("loading", 1000, "permille", f);
+    const auto t0 = ProgressBar::clock::now() + std::chrono::seconds(5);
+    bar.update(490, t0);  // the first report: no rate yet
+    bar.update(500, t0 + std::chrono::seconds(10));
+  }
+  std::rewind(f);
+  char first[200] = {}, second[200] = {};
+  REQUIRE(std::fgets(first, sizeof first, f) != nullptr);
+  REQUIRE(std::fgets(second, sizeof second, f) != nullptr);
+  std::fclose(f);
+  CHECK(std::string(first).find(" 49%  - permille/s  ETA -") != std::string::npos);
+  CHECK(std::string(second).find(" 50%  1.0 permille/s  ETA 8 min") != std::string::npos);
 }

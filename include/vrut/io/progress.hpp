@@ -1,7 +1,9 @@
 #pragma once
 // A terminal progress bar for long runs: percent, rate, ETA. On a terminal it
-// redraws one line; otherwise (logs, CI) it prints a line every 10 %.
-// Host-only.
+// redraws one line; otherwise (logs, CI) it prints a line every 10 %. The
+// rate counts from the first report, so a run resumed half way (or one that
+// settles before its first report) shows the pace it goes at now, not half
+// the run done in its first seconds. Host-only.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -12,15 +14,19 @@ namespace vrut {
 
 class ProgressBar {
  public:
+  using clock = std::chrono::steady_clock;
+
   // out == nullptr: a silent bar (the other ranks of an MPI run, say).
   ProgressBar(std::string label, long total, std::string unit = "steps", std::FILE* out = stderr)
       : label_(std::move(label)), unit_(std::move(unit)), total_(total > 0 ? total : 1), out_(out),
         tty_(out != nullptr && isatty(fileno(out)) != 0), start_(clock::now()), last_draw_(start_) {}
 
-  void update(long done) {
+  void update(long done) { update(done, clock::now()); }
+  // As update(done), at the time `now` (tests give their own).
+  void update(long done, clock::time_point now) {
     if (out_ == nullptr) return;
-    const auto now = clock::now();
     const int percent = static_cast<int>(100.0 * done / total_);
+    if (first_done_ < 0) first_done_ = done, first_report_ = now;
     if (tty_) {
       if (done < total_ && now - last_draw_ < std::chrono::milliseconds(200)) return;
     } else if (percent / 10 == last_decile_ || done >= total_) {
@@ -34,6 +40,7 @@ class ProgressBar {
   void finish() {
     if (out_ == nullptr) return;
     const auto now = clock::now();
+    if (first_done_ < 0) first_done_ = 0, first_report_ = start_;
     draw(total_, now);
     std::fprintf(out_, tty_ ? "\n" : "");
     std::fflush(out_);
@@ -62,17 +69,17 @@ class ProgressBar {
   }
 
  private:
-  using clock = std::chrono::steady_clock;
   void draw(long done, clock::time_point now) {
-    const double seconds = std::chrono::duration<double>(now - start_).count();
-    const double rate = seconds > 0.0 ? done / seconds : 0.0;
-    const double eta = rate > 0.0 ? (total_ - done) / rate : 0.0;
+    const double seconds = std::chrono::duration<double>(now - first_report_).count();
+    const bool measured = seconds > 0.0 && done > first_done_;  // else no rate yet: "-"
+    const double rate = measured ? (done - first_done_) / seconds : 0.0;
+    const std::string eta = done >= total_ ? "0 s" : measured ? duration_text((total_ - done) / rate) : "-";
     const int width = 30, filled = static_cast<int>(width * static_cast<double>(done) / total_);
     std::string bar(filled, '#');
     bar.resize(width, '.');
     std::fprintf(out_, "%s%s [%s] %3d%%  %s %s/s  ETA %s%s", tty_ ? "\r" : "", label_.c_str(), bar.c_str(),
-                 static_cast<int>(100.0 * done / total_), rate_text(rate).c_str(), unit_.c_str(),
-                 duration_text(eta).c_str(), tty_ ? "   " : "\n");
+                 static_cast<int>(100.0 * done / total_), measured ? rate_text(rate).c_str() : "-", unit_.c_str(),
+                 eta.c_str(), tty_ ? "   " : "\n");
     std::fflush(out_);
   }
 
@@ -80,7 +87,8 @@ class ProgressBar {
   long total_;
   std::FILE* out_;
   bool tty_;
-  clock::time_point start_, last_draw_;
+  clock::time_point start_, last_draw_, first_report_;
+  long first_done_ = -1;  // at the first report
   int last_decile_ = 0;
 };
 
