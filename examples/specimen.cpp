@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
       for (const char* only2d : {"--disk-radius-mm", "--placement", "--binder-film-mm", "--image", "--images"})
         if (app.get_option_no_throw(only2d) && app.count(only2d) > 0)
           throw std::invalid_argument(std::string(only2d) + " is for 2D sections; a 3D specimen has --sphere-radius-mm "
-                                      "and --depth-mm, and places its stones by jiggling");
+                                      "and --depth-mm, and places its stones by --stone-packing");
       const vrut::SpecimenSettings3 s3 = to_settings3(o, o3);
       // About 0.3 kB a sphere at most (the specimen, its pictures and VTK).
       const double spheres = 4.0 / (std::pow(vrut::fcc_cell(s3.sphere_radius), 3)) * s3.placement.width *
@@ -57,12 +57,7 @@ int main(int argc, char** argv) {
       vrut::Specimen3 sp;
       const auto start = std::chrono::steady_clock::now();
       try {
-        std::unique_ptr<vrut::ProgressBar> bar;
-        sp = vrut::generate_specimen3(s3, [&](std::size_t placed, std::size_t total) {
-          if (!bar) bar = std::make_unique<vrut::ProgressBar>("placing stones", static_cast<long>(total), "stones");
-          bar->update(static_cast<long>(placed));
-          if (placed == total) bar->finish();
-        });
+        sp = generate_specimen3_showing_progress(s3, "placing stones");
       } catch (const std::runtime_error& e) {  // the target could not be reached
         std::cerr << "error: " << e.what() << '\n';
         return 1;
@@ -75,14 +70,18 @@ int main(int argc, char** argv) {
       draw::surface3_png(sp, dir.file("surface.png").string());
       write_specimen3_vtk(sp, dir.file("specimen.vtk").string());
       dir.commit();
-      std::printf("gradation %s, 3D: %.0f x %.0f x %.2f mm, %zu stones, volume fraction %.4f (target %.4f), %d jammed "
-                  "and jiggled in; %zu spheres of %.2f mm, air voids %.4f; generated in %.1f s\nresults in %s\n",
+      const std::string packing =
+          sp.placement.compaction_steps > 0
+              ? "compacted in " + std::to_string(sp.placement.compaction_steps) + " steps"
+              : std::to_string(sp.placement.jammed) + " jammed and jiggled in";
+      std::printf("gradation %s, 3D: %.0f x %.0f x %.2f mm, %zu stones, volume fraction %.4f (target %.4f), %s; "
+                  "%zu spheres of %.2f mm, air voids %.4f; generated in %.1f s\nresults in %s\n",
                   sp.settings.gradation.name.c_str(), sp.width, sp.height, sp.depth, sp.placement.stones.size(),
-                  sp.placement.achieved_fraction, sp.placement.target_fraction, sp.placement.jammed,
+                  sp.placement.achieved_fraction, sp.placement.target_fraction, packing.c_str(),
                   sp.spheres.centers.size(), sp.spheres.radius, sp.spheres.air_void_achieved, seconds, out.c_str());
       return 0;
     }
-    for (const char* only3d : {"--depth-mm", "--sphere-radius-mm"})
+    for (const char* only3d : {"--depth-mm", "--sphere-radius-mm", "--stone-packing"})
       if (app.count(only3d) > 0) throw std::invalid_argument(std::string(only3d) + " is for 3D specimens (--dim 3)");
     if (io.images.size() > 1) throw std::invalid_argument("--image: one image at a time (vrut-rutting runs several)");
     if (!io.images.empty()) {

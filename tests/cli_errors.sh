@@ -134,7 +134,9 @@ specimen)
   expect "2" "sphere-radius-mm is for 3D" -- --sphere-radius-mm 1 --out l
   expect "2" "too small for its stones.*at least twice" -- --dim 3 --depth-mm 20 --width-mm 60 --out m
   expect "1 2" "dim" -- --dim 4 --out n
-  for d in k l m n; do
+  expect "2" "stone-packing is for 3D" -- --stone-packing compaction --out o
+  expect "1 2" "stone-packing" -- --dim 3 --stone-packing sideways --out p
+  for d in k l m n o p; do
     [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
   done
   if [[ -n ${VRUT_SANITIZED:-} ]]; then
@@ -201,6 +203,7 @@ rutting)
   expect "2" "--mastic-aggregate-factor is the 2D model's" -- "${small3[@]}" --mastic-aggregate-factor 3 --out bad3
   expect "2" "--depth-mm is for the 3D test" -- --depth-mm 30 --out bad3
   expect "2" "--mastic-aggregate-factor-3d is for the 3D test" -- --mastic-aggregate-factor-3d 3 --out bad3
+  expect "2" "--stone-packing is for the 3D test" -- --stone-packing random --out bad3
   expect "2" "too small for its stones" -- "${small3[@]}" --depth-mm 20 --out bad3
   [[ -e "$work/bad3" ]] && { echo "FAIL: output folder bad3 written after an error"; failures=$((failures + 1)); }
   # The runs that succeed, which the sanitizer build (VRUT_ERRORS_ONLY) leaves out: too slow there.

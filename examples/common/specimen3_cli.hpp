@@ -3,12 +3,16 @@
 #include "cli.hpp"
 #include "specimen_cli.hpp"
 
+#include <vrut/io/progress.hpp>
 #include <vrut/io/vtk.hpp>
 #include <vrut/specimen/specimen3.hpp>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,7 +21,15 @@ namespace specimen_cli {
 struct Specimen3Options {
   double depth_mm = vrut::PlacementSettings3{}.depth;
   double sphere_radius_mm = vrut::SpecimenSettings3{}.sphere_radius;
+  std::string stone_packing = "auto";
 };
+
+inline const std::map<std::string, vrut::StonePacking3>& stone_packings() {
+  static const std::map<std::string, vrut::StonePacking3> names{{"auto", vrut::StonePacking3::automatic},
+                                                                {"random", vrut::StonePacking3::random_addition},
+                                                                {"compaction", vrut::StonePacking3::compaction}};
+  return names;
+}
 
 // The options only 3D has; `o` holds the ones both have.
 inline void add_specimen3_options(CLI::App& app, Specimen3Options& o) {
@@ -26,6 +38,11 @@ inline void add_specimen3_options(CLI::App& app, Specimen3Options& o) {
       ->check(cli::finite_range(1.0, 1e4))->capture_default_str();
   app.add_option("--sphere-radius-mm", o.sphere_radius_mm, "3D: sphere radius")->check(cli::finite_range(0.05, 10.0))
       ->capture_default_str();
+  app.add_option("--stone-packing", o.stone_packing,
+                 "3D: how the stones reach their volume fraction: random (random addition, jiggled where a stone "
+                 "finds no room), compaction (placed loosely in a taller box, then pushed down by a lid; "
+                 "docs/specimen.md), or auto: random, and compaction where it jams short (3#)")
+      ->check(CLI::IsMember({"auto", "random", "compaction"}))->capture_default_str();
 }
 
 inline vrut::SpecimenSettings3 to_settings3(const SpecimenOptions& o, const Specimen3Options& o3) {
@@ -41,7 +58,33 @@ inline vrut::SpecimenSettings3 to_settings3(const SpecimenOptions& o, const Spec
   s.placement.shape.radius_fluctuation = o.radius_fluctuation;
   s.placement.shape.angle_fluctuation = o.angle_fluctuation;
   s.sphere_radius = o3.sphere_radius_mm;
+  s.packing = stone_packings().at(o3.stone_packing);
   return s;
+}
+
+// generate_specimen3 with a progress bar for the placement (`label`) and,
+// where there is one, for the compaction (its bar runs to the most steps it
+// may take; it ends early when the stones have settled).
+inline vrut::Specimen3 generate_specimen3_showing_progress(const vrut::SpecimenSettings3& s, const std::string& label) {
+  std::unique_ptr<vrut::ProgressBar> placing, compacting;
+  std::size_t last_placed = 0;
+  return vrut::generate_specimen3(
+      s,
+      [&](std::size_t placed, std::size_t total) {
+        if (placing && placed <= last_placed) {  // a second placement: the loose one of a compaction
+          std::fprintf(stderr, "\nrandom addition jammed short of the stones' volume fraction: compacting instead\n");
+          placing.reset();
+        }
+        last_placed = placed;
+        if (!placing) placing = std::make_unique<vrut::ProgressBar>(label, static_cast<long>(total), "stones");
+        placing->update(static_cast<long>(placed));
+        if (placed == total) placing->finish();
+      },
+      [&](long step, long most) {
+        if (!compacting) compacting = std::make_unique<vrut::ProgressBar>("compacting", most, "steps");
+        compacting->update(step);
+        if (step == most) compacting->finish();
+      });
 }
 
 inline nlohmann::json specimen3_summary(const vrut::Specimen3& sp) {
@@ -52,6 +95,8 @@ inline nlohmann::json specimen3_summary(const vrut::Specimen3& sp) {
   j["box_mm"] = {sp.width, sp.height, sp.depth};
   j["periodic"] = "depth (z)";
   j["stones_jammed"] = sp.placement.jammed;  // found no room in random tries: jiggled in
+  j["stone_packing"] = sp.placement.compaction_steps > 0 ? "compaction" : "random addition";
+  if (sp.placement.compaction_steps > 0) j["compaction_steps"] = sp.placement.compaction_steps;
   j["stone_volume_fraction"] = {{"target", sp.placement.target_fraction}, {"achieved", sp.placement.achieved_fraction}};
   j["air_void_fraction"] = {{"target", sp.spheres.air_void_target}, {"achieved", sp.spheres.air_void_achieved}};
   j["sphere_radius_mm"] = sp.spheres.radius;

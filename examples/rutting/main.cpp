@@ -88,6 +88,8 @@ int main(int argc, char** argv) {
     if (o.o3.depth_mm != defaults3.depth_mm) throw std::invalid_argument("--depth-mm is for the 3D test (--dim 3)");
     if (o.o3.sphere_radius_mm != defaults3.sphere_radius_mm)
       throw std::invalid_argument("--sphere-radius-mm is for the 3D test (--dim 3)");
+    if (o.o3.stone_packing != defaults3.stone_packing)
+      throw std::invalid_argument("--stone-packing is for the 3D test (--dim 3)");
     if (o.mastic_aggregate_factor_3d != RunOptions().mastic_aggregate_factor_3d)
       throw std::invalid_argument("--mastic-aggregate-factor-3d is for the 3D test (--dim 3)");
     o.convert();

@@ -70,7 +70,7 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   if (o.conversion != defaults.conversion) not_in_3d("--conversion " + o.conversion, "it takes the FCC lattice's rule");
   auto only_2d = [](const std::string& option) {
     throw std::invalid_argument(option + " is for 2D sections; a 3D specimen has --sphere-radius-mm and --depth-mm, "
-                                "and places its stones by jiggling");
+                                "and places its stones by --stone-packing");
   };
   if (o.so.disk_radius_mm != defaults.so.disk_radius_mm) only_2d("--disk-radius-mm");
   if (o.so.placement != defaults.so.placement) only_2d("--placement");
@@ -107,14 +107,9 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   std::vector<vrut::Specimen3> specimens;
   for (std::uint64_t seed : seeds) {
     ss.seed = seed;
-    std::unique_ptr<vrut::ProgressBar> placing;
     const std::string label = ensemble ? "placing stones, seed " + std::to_string(seed) : "placing stones";
     try {
-      specimens.push_back(vrut::generate_specimen3(ss, [&](std::size_t placed, std::size_t total) {
-        if (!placing) placing = std::make_unique<vrut::ProgressBar>(label, static_cast<long>(total), "stones");
-        placing->update(static_cast<long>(placed));
-        if (placed == total) placing->finish();
-      }));
+      specimens.push_back(specimen_cli::generate_specimen3_showing_progress(ss, label));
     } catch (const std::runtime_error& e) {  // the stones' fraction could not be reached
       std::cerr << "error: seed " << seed << ": " << e.what() << '\n';
       return 1;

@@ -49,6 +49,7 @@ struct Placement3 {
   double depth = 0.0;
   double target_fraction = 0.0, achieved_fraction = 0.0;  // stones' volume over the box's
   int jammed = 0;  // stones that found no room in their random tries (then jiggled)
+  long compaction_steps = 0;  // the compaction's (compaction3.hpp); 0: random addition alone
 };
 
 namespace detail {

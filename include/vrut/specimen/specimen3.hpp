@@ -3,6 +3,7 @@
 // FCC packing (docs/specimen.md, "In 3D"). Same settings and seed, same
 // specimen. Host-only; mm. Needs the target vrut::stones3.
 #include <vrut/data/particle_set.hpp>
+#include <vrut/specimen/compaction3.hpp>
 #include <vrut/specimen/fcc_packing.hpp>
 #include <vrut/specimen/placement3.hpp>
 #include <vrut/specimen/specimen.hpp>
@@ -10,14 +11,22 @@
 #include <cstdint>
 #include <functional>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 namespace vrut {
+
+// How the stones reach their volume fraction: random addition with local
+// jiggling (placement3.hpp), compaction (compaction3.hpp), or the first and,
+// where it jams short of the fraction (3#), the second.
+enum class StonePacking3 { automatic, random_addition, compaction };
 
 struct SpecimenSettings3 {
   Gradation gradation = builtin_gradation(2);
   MixVolumetrics mix;
   PlacementSettings3 placement;  // the box (its depth is rounded to whole FCC cells), shape, tries
+  StonePacking3 packing = StonePacking3::automatic;
+  CompactionSettings3 compaction;
   double sphere_radius = 1.0;    // mm
   double air_voids = 0.04;       // fraction of the box
   std::uint64_t seed = 1;
@@ -58,9 +67,11 @@ class StoneLocator3 {
   detail::StoneGrid3 grid_;
 };
 
-// progress(placed, total): the stones' placement, which takes most of the time.
+// progress(placed, total): the stones' placement, which takes most of the
+// time; compacting(step, total): a compaction's steps, where there is one.
 inline Specimen3 generate_specimen3(const SpecimenSettings3& s,
-                                    const std::function<void(std::size_t, std::size_t)>& progress = {}) {
+                                    const std::function<void(std::size_t, std::size_t)>& progress = {},
+                                    const std::function<void(long, long)>& compacting = {}) {
   validate_gradation(s.gradation, [&](std::size_t i) { return s.gradation.name + " row " + std::to_string(i + 1); });
   Specimen3 out;
   out.settings = s;
@@ -74,7 +85,17 @@ inline Specimen3 generate_specimen3(const SpecimenSettings3& s,
   placement.depth = out.depth;
   // One stream for the stones, one for the voids, as in 2D.
   std::mt19937_64 stones_rng(s.seed), voids_rng(s.seed ^ 0x9e3779b97f4a7c15ULL);
-  out.placement = place_stones3(out.stereology, placement, stones_rng, progress);
+  if (s.packing == StonePacking3::compaction) {
+    out.placement = compact_stones3(out.stereology, placement, s.compaction, stones_rng, progress, compacting);
+  } else {
+    try {
+      out.placement = place_stones3(out.stereology, placement, stones_rng, progress);
+    } catch (const std::runtime_error&) {  // jammed short of the fraction
+      if (s.packing != StonePacking3::automatic) throw;
+      // The stream goes on from where the jam left it: the same seed, the same specimen.
+      out.placement = compact_stones3(out.stereology, placement, s.compaction, stones_rng, progress, compacting);
+    }
+  }
   StoneLocator3 locate(out.placement, out.width, out.height);
   out.spheres = pack_spheres_by(locate, out.width, out.height, cells, s.sphere_radius, s.air_voids, voids_rng);
   return out;

@@ -1,0 +1,306 @@
+#pragma once
+// Compaction of a 3D specimen's stones (docs/specimen.md, "Compaction"):
+// where random addition jams short of the stones' volume fraction (3#), the
+// stones are pushed together as a real slab's are. Host-only, serial; mm.
+// Needs the target vrut::stones3.
+//
+//   1. Random addition (placement3.hpp) places the same stones loosely, at
+//      `loose_fraction`, in a box as much taller as that needs.
+//   2. A lid comes down at a constant speed to the specimen's height. The
+//      stones move as rigid bodies on soft, frictionless contacts: a spring
+//      on the depth of each overlap (libccd's Minkowski portal refinement
+//      gives its depth, direction and point) with a dashpot beside it; the
+//      floor, the two ends and the lid push each vertex that crosses them.
+//   3. The lid held, the stones settle with a little drag on their motion
+//      until no two overlap and none crosses a wall (kept `clearance`
+//      apart, below); the result is checked with the placement's own
+//      overlap test.
+// The stones keep moving as they settle, which lets them leave the chains of
+// contacts that stop a projection or a growth (docs/specimen.md). The
+// dynamics is only a way to a packing, so it has no units of force: a mass
+// of 1 per mm^3 and a spring of 1 per mm; the step follows from the lightest
+// stone. Each stone turns about its centroid with an isotropic moment of
+// inertia, a sphere's 2/5 m R^2 with R^2 0.6 times its vertices' mean square
+// distance (about a polyhedron's own; the packing needs the stones to turn,
+// not their exact inertia tensors).
+#include <vrut/specimen/placement3.hpp>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace vrut {
+
+struct CompactionSettings3 {
+  double loose_fraction = 0.40;  // the stones' volume fraction in the taller box they are first placed in
+  long lid_steps = 5000;         // steps for the lid to come down
+  long settle_steps = 60000;     // at most, the lid held, until nothing overlaps
+  double damping_ratio = 0.3;    // of a contact's critical damping
+  double drag = 0.002;           // of each stone's velocity, taken off at each settling step
+
+  void validate() const {
+    if (!(loose_fraction > 0.0 && loose_fraction < 0.5))
+      throw std::invalid_argument("the compaction's loose fraction must lie in (0, 0.5): random addition places "
+                                  "the stones there");
+    if (lid_steps < 1 || settle_steps < 1) throw std::invalid_argument("the compaction needs at least one step");
+    if (!(damping_ratio >= 0.0 && damping_ratio < 1.0) || !(drag >= 0.0 && drag < 1.0))
+      throw std::invalid_argument("the compaction's damping ratio and drag must lie in [0, 1)");
+  }
+};
+
+namespace detail {
+
+// A stone as a rigid body of the compaction.
+struct CompactedStone {
+  Stone3 shape;                  // as placed loosely, its centroid at the origin
+  std::vector<Point3> vertices;  // about the centroid, as turned now
+  Eigen::Quaterniond turn = Eigen::Quaterniond::Identity();
+  Point3 centre = Point3::Zero(), velocity = Point3::Zero(), spin = Point3::Zero();
+  Point3 force = Point3::Zero(), torque = Point3::Zero();
+  double mass = 0.0, inertia = 0.0, reach = 0.0;
+};
+
+// The stone as libccd sees it, shifted (a periodic image) and grown by
+// `margin` all round (the Minkowski sum with a ball).
+struct ShiftedCompactedStone {
+  const CompactedStone* stone;
+  Point3 shift;
+  double margin;
+};
+inline void compacted_support(const void* object, const ccd_vec3_t* direction, ccd_vec3_t* out) {
+  const auto* s = static_cast<const ShiftedCompactedStone*>(object);
+  const Point3 d(ccdVec3X(direction), ccdVec3Y(direction), ccdVec3Z(direction));
+  const Point3* best = &s->stone->vertices.front();
+  double most = best->dot(d);
+  for (const auto& v : s->stone->vertices)
+    if (v.dot(d) > most) most = v.dot(d), best = &v;
+  const double length = d.norm();
+  const Point3 p = s->stone->centre + *best + s->shift + (length > 0.0 ? s->margin / length : 0.0) * d;
+  ccdVec3Set(out, p.x(), p.y(), p.z());
+}
+inline void compacted_centre(const void* object, ccd_vec3_t* out) {
+  const auto* s = static_cast<const ShiftedCompactedStone*>(object);
+  const Point3 c = s->stone->centre + s->shift;
+  ccdVec3Set(out, c.x(), c.y(), c.z());
+}
+
+}  // namespace detail
+
+// The stones of `st` compacted into the box of `ps` (its depth periodic).
+// placing(placed, total): the loose placement; compacting(step, total): the
+// lid's and the settling's steps (total: the most there can be).
+template <class Rng>
+Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, const CompactionSettings3& cs,
+                           Rng& rng, const std::function<void(std::size_t, std::size_t)>& placing = {},
+                           const std::function<void(long, long)>& compacting = {}) {
+  cs.validate();
+  const double target = st.coarse_volume_fraction;
+  const double width = ps.width, height = ps.height, depth = ps.depth;
+  // The same stones, placed loosely in a taller box: the classes' fractions
+  // of it scaled so that they draw the volume of the specimen's box.
+  const double loose_height = height * std::max(1.0, target / cs.loose_fraction);
+  Stereology loose = st;
+  for (double& p : loose.volume_fraction) p *= height / loose_height;
+  loose.coarse_volume_fraction *= height / loose_height;
+  PlacementSettings3 tall = ps;
+  tall.height = loose_height;
+  const Placement3 placed = place_stones3(loose, tall, rng, placing);
+
+  std::vector<detail::CompactedStone> stones(placed.stones.size());
+  double lightest = std::numeric_limits<double>::infinity(), volume = 0.0;
+  for (std::size_t i = 0; i < stones.size(); ++i) {
+    detail::CompactedStone& s = stones[i];
+    s.shape = placed.stones[i].shape;
+    s.centre = s.shape.centroid;
+    s.shape.translate(-s.centre);
+    s.vertices = s.shape.vertices;
+    s.mass = s.shape.volume;
+    double mean_square = 0.0;
+    for (const auto& v : s.vertices) mean_square += v.squaredNorm();
+    s.inertia = 0.4 * s.mass * 0.6 * mean_square / static_cast<double>(s.vertices.size());
+    s.reach = s.shape.reach;
+    lightest = std::min(lightest, s.mass);
+    volume += s.mass;
+  }
+  const double k = 1.0, dt = 0.15 * std::sqrt(lightest / k);
+  // The stones are kept this far apart, and from the walls: libccd's
+  // penetration finds no overlap for some pairs that merely touch, which its
+  // overlap test (the placement's, used at the end) counts as overlapping.
+  const double clearance = 1e-3;  // mm
+  const double lid_speed = (loose_height - height) / static_cast<double>(cs.lid_steps);  // mm a step
+
+  ccd_t ccd;
+  CCD_INIT(&ccd);
+  ccd.support1 = ccd.support2 = detail::compacted_support;
+  ccd.center1 = ccd.center2 = detail::compacted_centre;
+  ccd.max_iterations = 100;
+  ccd.mpr_tolerance = 1e-10;
+
+  // The pairs whose centres lie within their reaches and two skins (with the
+  // image across the depth), found again when a stone's centre has moved
+  // half a skin: by the reach, not the bounding box, which changes as a
+  // stone turns about its centre.
+  struct Pair {
+    int a, b;
+    double image;
+  };
+  std::vector<Pair> pairs;
+  std::vector<Point3> centre_at_search(stones.size());
+  const double skin = 0.5;
+  auto find_pairs = [&] {
+    detail::StoneGrid3 grid(width, loose_height, depth, 4.0);
+    std::vector<Eigen::AlignedBox3d> boxes(stones.size());
+    for (std::size_t i = 0; i < stones.size(); ++i) {
+      const Point3 half = Point3::Constant(stones[i].reach + skin);
+      const Eigen::AlignedBox3d box(stones[i].centre - half, stones[i].centre + half);
+      boxes[i] = box;
+      grid.insert(static_cast<int>(i), box);
+      centre_at_search[i] = stones[i].centre;
+    }
+    pairs.clear();
+    for (std::size_t i = 0; i < stones.size(); ++i)
+      grid.any_near(boxes[i], [&](int j) {
+        if (j <= static_cast<int>(i)) return false;
+        const double reach = stones[i].reach + stones[j].reach + 2.0 * skin;
+        for (double image : {0.0, -depth, depth})
+          if ((stones[j].centre + Point3(0.0, 0.0, image) - stones[i].centre).squaredNorm() < reach * reach)
+            pairs.push_back({static_cast<int>(i), j, image});
+        return false;
+      });
+  };
+  auto moved_far = [&] {
+    for (std::size_t i = 0; i < stones.size(); ++i) {
+      Point3 d = stones[i].centre - centre_at_search[i];
+      d.z() -= depth * std::round(d.z() / depth);
+      if (d.squaredNorm() > 0.25 * skin * skin) return true;
+    }
+    return false;
+  };
+
+  // The loads; returns whether anything overlaps.
+  double lid = loose_height;
+  auto wall = [&](detail::CompactedStone& s, int axis, double plane, double side) {
+    // side +1: the stone keeps to coordinates above the plane; -1: below.
+    bool crossed = false;
+    for (const auto& v : s.vertices) {
+      const double depth_in = side * (plane - (s.centre[axis] + v[axis])) + clearance;
+      if (depth_in <= 0.0) continue;
+      crossed = true;
+      const double approach = side * (s.velocity[axis] + s.spin.cross(v)[axis]);
+      Point3 f = Point3::Zero();
+      f[axis] = side * (k * depth_in - 2.0 * cs.damping_ratio * std::sqrt(k * s.mass) * approach);
+      s.force += f;
+      s.torque += v.cross(f);
+    }
+    return crossed;
+  };
+  auto loads = [&] {
+    for (auto& s : stones) s.force.setZero(), s.torque.setZero();
+    bool overlap = false;
+    for (const Pair& p : pairs) {
+      detail::CompactedStone& a = stones[p.a];
+      detail::CompactedStone& b = stones[p.b];
+      const Point3 shift(0.0, 0.0, p.image);
+      const double reach = a.reach + b.reach + clearance;
+      if ((b.centre + shift - a.centre).squaredNorm() >= reach * reach) continue;
+      detail::ShiftedCompactedStone sa{&a, Point3::Zero(), 0.5 * clearance}, sb{&b, shift, 0.5 * clearance};
+      ccd_real_t overlap_depth;
+      ccd_vec3_t direction, point;
+      if (ccdMPRPenetration(&sa, &sb, &ccd, &overlap_depth, &direction, &point) != 0) continue;
+      overlap = true;
+      // The direction moves b out of a.
+      const Point3 n(ccdVec3X(&direction), ccdVec3Y(&direction), ccdVec3Z(&direction));
+      const Point3 at(ccdVec3X(&point), ccdVec3Y(&point), ccdVec3Z(&point));
+      const Point3 arm_a = at - a.centre, arm_b = at - (b.centre + shift);
+      const Point3 relative = (b.velocity + b.spin.cross(arm_b)) - (a.velocity + a.spin.cross(arm_a));
+      const double reduced_mass = a.mass * b.mass / (a.mass + b.mass);
+      const Point3 f = (k * overlap_depth - 2.0 * cs.damping_ratio * std::sqrt(k * reduced_mass) * relative.dot(n)) * n;
+      b.force += f;
+      b.torque += arm_b.cross(f);
+      a.force -= f;
+      a.torque -= arm_a.cross(f);
+    }
+    for (auto& s : stones) {
+      const bool floor = wall(s, 1, 0.0, 1.0), top = wall(s, 1, lid, -1.0);
+      const bool ends = wall(s, 0, 0.0, 1.0) | wall(s, 0, width, -1.0);
+      overlap = overlap || floor || top || ends;
+    }
+    return overlap;
+  };
+  auto advance = [&](double keep) {
+    for (auto& s : stones) {
+      s.velocity = keep * (s.velocity + (dt / s.mass) * s.force);
+      s.spin = keep * (s.spin + (dt / s.inertia) * s.torque);
+      s.centre += dt * s.velocity;
+      s.centre.z() -= depth * std::floor(s.centre.z() / depth);
+      const double angle = dt * s.spin.norm();
+      if (angle > 0.0) {
+        s.turn = Eigen::Quaterniond(Eigen::AngleAxisd(angle, s.spin.normalized())) * s.turn;
+        s.turn.normalize();
+        const Eigen::Matrix3d r = s.turn.toRotationMatrix();
+        for (std::size_t v = 0; v < s.vertices.size(); ++v) s.vertices[v] = r * s.shape.vertices[v];
+      }
+    }
+    if (moved_far()) find_pairs();
+  };
+
+  const long most = cs.lid_steps + cs.settle_steps;
+  find_pairs();
+  long step = 0;
+  for (const long lid_steps = loose_height > height ? cs.lid_steps : 0; step < lid_steps; ++step) {
+    lid = loose_height - lid_speed * static_cast<double>(step + 1);
+    loads();
+    advance(1.0);
+    if (compacting && step % 100 == 0) compacting(step, most);
+  }
+  lid = height;
+  bool settled = false;
+  for (; step < most && !settled; ++step) {
+    settled = !loads();
+    if (!settled) advance(1.0 - cs.drag);
+    if (compacting && step % 100 == 0) compacting(step, most);
+  }
+  if (compacting) compacting(most, most);
+
+  Placement3 out;
+  out.depth = depth;
+  out.target_fraction = target;
+  out.jammed = placed.jammed;
+  out.compaction_steps = step;
+  for (std::size_t i = 0; i < stones.size(); ++i) {
+    PlacedStone3 p = placed.stones[i];
+    p.shape = detail::turned(stones[i].shape, stones[i].turn.toRotationMatrix());
+    p.shape.translate(stones[i].centre);
+    out.stones.push_back(std::move(p));
+  }
+  // The placement's own test: no stone outside the box, no two that overlap.
+  int overlapping = 0, outside = 0;
+  detail::StoneGrid3 grid(width, height, depth, 4.0);
+  for (std::size_t i = 0; i < out.stones.size(); ++i) {
+    const Eigen::AlignedBox3d box = out.stones[i].shape.bounds();
+    if (box.min().x() < 0.0 || box.min().y() < 0.0 || box.max().x() > width || box.max().y() > height) ++outside;
+    grid.any_near(box, [&](int j) {
+      for (double image : {0.0, -depth, depth})
+        if (stones_overlap(out.stones[i].shape, out.stones[j].shape, Point3(0.0, 0.0, image))) ++overlapping;
+      return false;
+    });
+    grid.insert(static_cast<int>(i), box);
+  }
+  if (!settled || overlapping > 0 || outside > 0) {
+    std::ostringstream msg;
+    msg << "cannot compact the stones to the volume fraction " << volume / (width * height * depth) << " in "
+        << cs.settle_steps << " settling steps: " << overlapping << " pairs still overlap and " << outside
+        << " stones cross a wall";
+    throw std::runtime_error(msg.str());
+  }
+  out.achieved_fraction = volume / (width * height * depth);
+  return out;
+}
+
+}  // namespace vrut
