@@ -81,7 +81,7 @@ inline vrut::Specimen3 generate_specimen3_showing_progress(const vrut::SpecimenS
         if (placed == total) placing->finish();
       },
       [&](long step, long most) {
-        if (!compacting) compacting = std::make_unique<vrut::ProgressBar>("compacting", most, "steps");
+        if (!compacting) compacting = std::make_unique<vrut::ProgressBar>("compacting (at most)", most, "steps");
         compacting->update(step);
         if (step == most) compacting->finish();
       });
