@@ -25,6 +25,23 @@ int stones_holding(const vrut::Placement3& p, const Point3& x) {
   return n;
 }
 
+// Points at random in the box: none in two stones, and the share in one
+// equal to the stones' volume fraction within four standard errors (a check
+// on the volumes that does not use them).
+void check_points_in_stones(const vrut::Placement3& p, const vrut::PlacementSettings3& ps, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int n = 20000;
+  int in = 0, twice = 0;
+  for (int i = 0; i < n; ++i) {
+    const int h = stones_holding(p, Point3(ps.width * u(rng), ps.height * u(rng), ps.depth * u(rng)));
+    in += h > 0;
+    twice += h > 1;
+  }
+  const double f = p.achieved_fraction, se = std::sqrt(f * (1.0 - f) / n);
+  CHECK(twice == 0);
+  CHECK(std::abs(static_cast<double>(in) / n - f) < 4.0 * se);
+}
+
 }  // namespace
 
 TEST_CASE("3D stones: the hull of a cube's and an octahedron's corners, by hand", "[specimen3][unit]") {
@@ -144,21 +161,8 @@ TEST_CASE("3D placement: stones share no point, across the periodic depth too", 
     vrut::PlacementSettings3 ps = s.placement;
     const vrut::Placement3 p = vrut::place_stones3(vrut::stereology(s.gradation, s.mix), ps, rng);
     CHECK(p.achieved_fraction == Approx(p.target_fraction).margin(0.01));
-    // Points at random: none in two stones; the share in one is the stones'
-    // volume fraction within four standard errors (a check on the volumes
-    // that does not use them).
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    const int n = 20000;
-    int in = 0, twice = 0;
-    for (int i = 0; i < n; ++i) {
-      const int h = stones_holding(p, Point3(ps.width * u(rng), ps.height * u(rng), ps.depth * u(rng)));
-      in += h > 0;
-      twice += h > 1;
-    }
-    const double f = p.achieved_fraction, se = std::sqrt(f * (1.0 - f) / n);
     INFO("mix " << mix << "#: " << p.stones.size() << " stones, " << p.jammed << " jammed");
-    CHECK(twice == 0);
-    CHECK(std::abs(static_cast<double>(in) / n - f) < 4.0 * se);
+    check_points_in_stones(p, ps, rng);
     for (const auto& st : p.stones) {
       const auto b = st.shape.bounds();
       CHECK(b.min().x() >= 0.0);
@@ -279,17 +283,7 @@ TEST_CASE("3D compaction: the stones reach 0.60 of a small box and share no poin
   INFO(p.stones.size() << " stones, " << p.compaction_steps << " steps");
   CHECK(p.compaction_steps > cs.lid_steps);
   CHECK(p.achieved_fraction == Approx(0.60).margin(0.01));
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const int n = 20000;
-  int in = 0, twice = 0;
-  for (int i = 0; i < n; ++i) {
-    const int h = stones_holding(p, Point3(ps.width * u(rng), ps.height * u(rng), ps.depth * u(rng)));
-    in += h > 0;
-    twice += h > 1;
-  }
-  const double f = p.achieved_fraction, se = std::sqrt(f * (1.0 - f) / n);
-  CHECK(twice == 0);
-  CHECK(std::abs(static_cast<double>(in) / n - f) < 4.0 * se);
+  check_points_in_stones(p, ps, rng);
   // The loose placement that the compaction began from, drawn again from the same stream.
   vrut::Stereology loose = st;
   const double loose_height = ps.height * st.coarse_volume_fraction / cs.loose_fraction;

@@ -76,12 +76,9 @@ struct ShiftedCompactedStone {
 inline void compacted_support(const void* object, const ccd_vec3_t* direction, ccd_vec3_t* out) {
   const auto* s = static_cast<const ShiftedCompactedStone*>(object);
   const Point3 d(ccdVec3X(direction), ccdVec3Y(direction), ccdVec3Z(direction));
-  const Point3* best = &s->stone->vertices.front();
-  double most = best->dot(d);
-  for (const auto& v : s->stone->vertices)
-    if (v.dot(d) > most) most = v.dot(d), best = &v;
   const double length = d.norm();
-  const Point3 p = s->stone->centre + *best + s->shift + (length > 0.0 ? s->margin / length : 0.0) * d;
+  const Point3 p = s->stone->centre + farthest_along(s->stone->vertices, d) + s->shift +
+                   (length > 0.0 ? s->margin / length : 0.0) * d;
   ccdVec3Set(out, p.x(), p.y(), p.z());
 }
 inline void compacted_centre(const void* object, ccd_vec3_t* out) {

@@ -186,14 +186,18 @@ struct ShiftedStone {
   const Stone3* stone;
   Point3 shift;
 };
+// The vertex farthest along d: a convex hull's support point.
+inline const Point3& farthest_along(const std::vector<Point3>& vertices, const Point3& d) {
+  const Point3* best = &vertices.front();
+  double most = best->dot(d);
+  for (const auto& v : vertices)
+    if (v.dot(d) > most) most = v.dot(d), best = &v;
+  return *best;
+}
 inline void stone_support(const void* object, const ccd_vec3_t* direction, ccd_vec3_t* out) {
   const auto* s = static_cast<const ShiftedStone*>(object);
   const Point3 d(ccdVec3X(direction), ccdVec3Y(direction), ccdVec3Z(direction));
-  const Point3* best = &s->stone->vertices.front();
-  double most = best->dot(d);
-  for (const auto& v : s->stone->vertices)
-    if (v.dot(d) > most) most = v.dot(d), best = &v;
-  const Point3 p = *best + s->shift;
+  const Point3 p = farthest_along(s->stone->vertices, d) + s->shift;
   ccdVec3Set(out, p.x(), p.y(), p.z());
 }
 inline void stone_centre(const void* object, ccd_vec3_t* out) {
