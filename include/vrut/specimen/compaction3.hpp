@@ -150,19 +150,19 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
   std::vector<Pair> pairs;
   std::vector<Point3> centre_at_search(stones.size());
   const double skin = 0.5;
+  auto reach_box = [&](std::size_t i) {
+    const Point3 half = Point3::Constant(stones[i].reach + skin);
+    return Eigen::AlignedBox3d(stones[i].centre - half, stones[i].centre + half);
+  };
   auto find_pairs = [&] {
     detail::StoneGrid3 grid(width, loose_height, depth, 4.0);
-    std::vector<Eigen::AlignedBox3d> boxes(stones.size());
     for (std::size_t i = 0; i < stones.size(); ++i) {
-      const Point3 half = Point3::Constant(stones[i].reach + skin);
-      const Eigen::AlignedBox3d box(stones[i].centre - half, stones[i].centre + half);
-      boxes[i] = box;
-      grid.insert(static_cast<int>(i), box);
+      grid.insert(static_cast<int>(i), reach_box(i));
       centre_at_search[i] = stones[i].centre;
     }
     pairs.clear();
     for (std::size_t i = 0; i < stones.size(); ++i)
-      grid.any_near(boxes[i], [&](int j) {
+      grid.any_near(reach_box(i), [&](int j) {
         if (j <= static_cast<int>(i)) return false;
         const double reach = stones[i].reach + stones[j].reach + 2.0 * skin;
         for (double image : {0.0, -depth, depth})

@@ -85,17 +85,17 @@ inline Specimen3 generate_specimen3(const SpecimenSettings3& s,
   placement.depth = out.depth;
   // One stream for the stones, one for the voids, as in 2D.
   std::mt19937_64 stones_rng(s.seed), voids_rng(s.seed ^ 0x9e3779b97f4a7c15ULL);
-  if (s.packing == StonePacking3::compaction) {
-    out.placement = compact_stones3(out.stereology, placement, s.compaction, stones_rng, progress, compacting);
-  } else {
+  bool compact = s.packing == StonePacking3::compaction;
+  if (!compact) {
     try {
       out.placement = place_stones3(out.stereology, placement, stones_rng, progress);
     } catch (const std::runtime_error&) {  // jammed short of the fraction
       if (s.packing != StonePacking3::automatic) throw;
-      // The stream goes on from where the jam left it: the same seed, the same specimen.
-      out.placement = compact_stones3(out.stereology, placement, s.compaction, stones_rng, progress, compacting);
+      compact = true;  // the stream goes on from where the jam left it: the same seed, the same specimen
     }
   }
+  if (compact)
+    out.placement = compact_stones3(out.stereology, placement, s.compaction, stones_rng, progress, compacting);
   StoneLocator3 locate(out.placement, out.width, out.height);
   out.spheres = pack_spheres_by(locate, out.width, out.height, cells, s.sphere_radius, s.air_voids, voids_rng);
   return out;
