@@ -4,7 +4,8 @@
 #    ends with the results of the run never stopped, bit for bit;
 #  - Ctrl-C leaves a valid checkpoint beside valid partial results, and
 #    resuming that gives the same results again;
-#  - a 3D ensemble killed and resumed the same way;
+#  - a 3D ensemble killed and resumed the same way, on the stones its
+#    checkpoint kept (not placed again);
 #  - a damaged checkpoint, and options given beside --resume, are refused.
 # Usage: checkpoint_resume.sh VRUT_RUTTING
 set -u
@@ -81,6 +82,10 @@ wait "$pid" 2>/dev/null
 [[ -s killed3/checkpoint.vrut && ! -e killed3/summary.json ]] || fail "3D, after SIGKILL: $(ls killed3)"
 "$exe" --resume killed3 --threads 1 >resumed3.out 2>&1 || fail "--resume of the 3D ensemble failed: $(tail -n 3 resumed3.out)"
 same_results whole3 killed3
+# ... on the stones the checkpoint kept, not placed again.
+[[ $(grep -c "the stones placed when the run began, from the checkpoint" resumed3.out) -eq 2 ]] ||
+  fail "the resumed 3D ensemble does not say it took both seeds' stones from the checkpoint: $(head -n 5 resumed3.out)"
+! grep -q "placing stones" resumed3.out || fail "the resumed 3D ensemble placed its stones again"
 
 # Ctrl-C: partial results and a checkpoint, and how to go on.
 "$exe" "${small[@]}" --out stopped >stopped.out 2>stopped.err &

@@ -4,13 +4,17 @@
 #include "band_checks.hpp"
 #include "small_box3.hpp"
 
+#include <vrut/io/stones3_state.hpp>
 #include <vrut/specimen/specimen3.hpp>
+
+#include <nlohmann/json.hpp>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace {
@@ -190,6 +194,53 @@ TEST_CASE("3D specimen: a sphere belongs to the stone that holds its centre", "[
   }
   const auto set = vrut::to_particle_set(sp, 2400.0, 2700.0);
   CHECK(set.size() == sp.spheres.centers.size());
+}
+
+// A resumed 3D run takes its stones from the checkpoint (io/stones3_state.hpp)
+// instead of placing them again; the specimen built on them must be the one
+// generate_specimen3 builds, bit for bit, after the trip through CBOR that
+// the checkpoint file makes.
+TEST_CASE("3D specimen: built on its stones read back from a checkpoint item, the same specimen bit for bit",
+          "[specimen3][checkpoint]") {
+  auto s = vrut_test::small_box3(1, 4);
+  s.sphere_radius = 1.0;
+  const vrut::Specimen3 sp = vrut::generate_specimen3(s);
+  const nlohmann::json state = nlohmann::json::from_cbor(nlohmann::json::to_cbor(vrut::stones3_state(sp.placement)));
+  const vrut::Specimen3 again = vrut::specimen3_on_stones(s, vrut::placement_from_stones3_state(state, "test"));
+  REQUIRE(again.placement.stones.size() == sp.placement.stones.size());
+  for (std::size_t k = 0; k < sp.placement.stones.size(); ++k) {
+    const auto& a = sp.placement.stones[k];
+    const auto& b = again.placement.stones[k];
+    CHECK(a.size_class == b.size_class);
+    CHECK(a.diameter == b.diameter);
+    CHECK(a.shape.vertices == b.shape.vertices);
+    CHECK(a.shape.planes == b.shape.planes);
+    CHECK(a.shape.centroid == b.shape.centroid);
+    CHECK(a.shape.volume == b.shape.volume);
+    CHECK(a.shape.reach == b.shape.reach);
+  }
+  CHECK(again.placement.achieved_fraction == sp.placement.achieved_fraction);
+  CHECK(again.placement.jammed == sp.placement.jammed);
+  CHECK(again.spheres.centers == sp.spheres.centers);
+  CHECK(again.spheres.stone == sp.spheres.stone);
+  CHECK(again.spheres.bonds == sp.spheres.bonds);
+  CHECK(again.spheres.stone_pairs == sp.spheres.stone_pairs);
+  CHECK(again.spheres.removed_for_voids == sp.spheres.removed_for_voids);
+
+  SECTION("stones of another box, or items that do not agree, are refused") {
+    auto deeper = s;
+    deeper.placement.depth = 60.0;
+    CHECK_THROWS_AS(vrut::specimen3_on_stones(deeper, vrut::placement_from_stones3_state(state, "test")),
+                    std::invalid_argument);
+    nlohmann::json short_of_one = state;
+    short_of_one.erase("reach");
+    CHECK_THROWS_AS(vrut::placement_from_stones3_state(short_of_one, "test"), vrut::CheckpointError);
+    vrut::Placement3 fewer = sp.placement;
+    fewer.stones.front().shape.planes.pop_back();
+    nlohmann::json mixed = vrut::stones3_state(fewer);
+    mixed["planes"] = state["planes"];  // the counts of one placement, the planes of another
+    CHECK_THROWS_AS(vrut::placement_from_stones3_state(mixed, "test"), vrut::CheckpointError);
+  }
 }
 
 namespace {

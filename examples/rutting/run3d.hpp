@@ -18,6 +18,7 @@
 #include <vrut/io/memory_check.hpp>
 #include <vrut/io/output_dir.hpp>
 #include <vrut/io/progress.hpp>
+#include <vrut/io/stones3_state.hpp>
 #include <vrut/io/vtk.hpp>
 #include <vrut/rutting/run3.hpp>
 
@@ -31,6 +32,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -104,17 +106,36 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   output.require_space(4'000'000 + 400 * static_cast<std::size_t>(spheres) +
                        2 * 2'500 * static_cast<std::size_t>(spheres * seeds.size()));
 
+  // The stones go into the checkpoint's header: a resumed run takes them
+  // from there rather than placing them again (a compacted 3# specimen
+  // takes about 18 minutes to place). Checkpoints written before they were
+  // kept have none: those runs place their stones again, the same stones.
+  const nlohmann::json* stones_kept =
+      checkpoint.resuming() && checkpoint.header().contains("stones3") ? &checkpoint.header().at("stones3") : nullptr;
+  nlohmann::json stones_to_keep = nlohmann::json::object();
   std::vector<vrut::Specimen3> specimens;
   for (std::uint64_t seed : seeds) {
     ss.seed = seed;
-    const std::string label = ensemble ? "placing stones, seed " + std::to_string(seed) : "placing stones";
+    const std::string key = std::to_string(seed);
+    if (stones_kept != nullptr) {
+      if (!stones_kept->contains(key))
+        throw vrut::CheckpointError(checkpoint.path().string() + " keeps no stones for seed " + key +
+                                    ": it is of another run");
+      specimens.push_back(vrut::specimen3_on_stones(
+          ss, vrut::placement_from_stones3_state(stones_kept->at(key), checkpoint.path().string())));
+      std::fprintf(stderr, "seed %s: the stones placed when the run began, from the checkpoint\n", key.c_str());
+      continue;
+    }
+    const std::string label = ensemble ? "placing stones, seed " + key : "placing stones";
     try {
       specimens.push_back(specimen_cli::generate_specimen3_showing_progress(ss, label));
     } catch (const std::runtime_error& e) {  // the stones' fraction could not be reached
       std::cerr << "error: seed " << seed << ": " << e.what() << '\n';
       return 1;
     }
+    stones_to_keep[key] = vrut::stones3_state(specimens.back().placement);
   }
+  if (stones_kept == nullptr) checkpoint.add_to_header("stones3", std::move(stones_to_keep));
   const vrut::Specimen3& sp = specimens.front();
   std::size_t all_spheres = 0;
   for (const auto& one : specimens) all_spheres += one.spheres.centers.size();

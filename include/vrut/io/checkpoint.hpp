@@ -24,6 +24,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace vrut {
@@ -245,6 +246,9 @@ class CheckpointFile {
   void set_interval(double every_seconds) { every_ = every_seconds; }
   bool resuming() const { return resuming_; }
   const nlohmann::json& header() const { return header_; }
+  // A part of the header known only once the run has begun (a 3D run's
+  // stones, placed after the file was named); every later save carries it.
+  void add_to_header(const std::string& key, nlohmann::json value) { header_[key] = std::move(value); }
   const std::filesystem::path& path() const { return path_; }
   int written() const { return written_; }
   bool due() const {

@@ -13,6 +13,7 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace vrut {
 
@@ -67,24 +68,41 @@ class StoneLocator3 {
   detail::StoneGrid3 grid_;
 };
 
-// progress(placed, total): the stones' placement, which takes most of the
-// time; compacting(step, total): a compaction's steps, where there is one.
-inline Specimen3 generate_specimen3(const SpecimenSettings3& s,
-                                    const std::function<void(std::size_t, std::size_t)>& progress = {},
-                                    const std::function<void(long, long)>& compacting = {}) {
+namespace detail {
+// The specimen's box and classes, before its stones.
+inline Specimen3 specimen3_frame(const SpecimenSettings3& s) {
   validate_gradation(s.gradation, [&](std::size_t i) { return s.gradation.name + " row " + std::to_string(i + 1); });
   Specimen3 out;
   out.settings = s;
   out.name = "seed " + std::to_string(s.seed);
   out.width = s.placement.width;
   out.height = s.placement.height;
-  const int cells = fcc_cells_deep(s.placement.depth, s.sphere_radius);
-  out.depth = cells * fcc_cell(s.sphere_radius);
+  out.depth = fcc_cells_deep(s.placement.depth, s.sphere_radius) * fcc_cell(s.sphere_radius);
   out.stereology = stereology(s.gradation, s.mix);
+  return out;
+}
+
+// The spheres, once the stones are placed. One stream for the stones, one
+// for the voids, as in 2D: the voids' does not depend on how the stones
+// were placed.
+inline void pack_specimen3_spheres(Specimen3& out) {
+  const SpecimenSettings3& s = out.settings;
+  std::mt19937_64 voids_rng(s.seed ^ 0x9e3779b97f4a7c15ULL);
+  StoneLocator3 locate(out.placement, out.width, out.height);
+  out.spheres = pack_spheres_by(locate, out.width, out.height, fcc_cells_deep(s.placement.depth, s.sphere_radius),
+                                s.sphere_radius, s.air_voids, voids_rng);
+}
+}  // namespace detail
+
+// progress(placed, total): the stones' placement, which takes most of the
+// time; compacting(step, total): a compaction's steps, where there is one.
+inline Specimen3 generate_specimen3(const SpecimenSettings3& s,
+                                    const std::function<void(std::size_t, std::size_t)>& progress = {},
+                                    const std::function<void(long, long)>& compacting = {}) {
+  Specimen3 out = detail::specimen3_frame(s);
   PlacementSettings3 placement = s.placement;
   placement.depth = out.depth;
-  // One stream for the stones, one for the voids, as in 2D.
-  std::mt19937_64 stones_rng(s.seed), voids_rng(s.seed ^ 0x9e3779b97f4a7c15ULL);
+  std::mt19937_64 stones_rng(s.seed);
   bool compact = s.packing == StonePacking3::compaction;
   if (!compact) {
     try {
@@ -96,8 +114,20 @@ inline Specimen3 generate_specimen3(const SpecimenSettings3& s,
   }
   if (compact)
     out.placement = compact_stones3(out.stereology, placement, s.compaction, stones_rng, progress, compacting);
-  StoneLocator3 locate(out.placement, out.width, out.height);
-  out.spheres = pack_spheres_by(locate, out.width, out.height, cells, s.sphere_radius, s.air_voids, voids_rng);
+  detail::pack_specimen3_spheres(out);
+  return out;
+}
+
+// The specimen of these settings on stones placed before (a resumed run's,
+// io/stones3_state.hpp): the same stones give the same specimen as
+// generate_specimen3 gave. Stones of another depth are refused.
+inline Specimen3 specimen3_on_stones(const SpecimenSettings3& s, Placement3 stones) {
+  Specimen3 out = detail::specimen3_frame(s);
+  if (stones.depth != out.depth)
+    throw std::invalid_argument("stones placed in a box " + std::to_string(stones.depth) + " mm deep do not fit a "
+                                "specimen " + std::to_string(out.depth) + " mm deep");
+  out.placement = std::move(stones);
+  detail::pack_specimen3_spheres(out);
   return out;
 }
 
