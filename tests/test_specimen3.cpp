@@ -6,15 +6,18 @@
 
 #include <vrut/io/stones3_state.hpp>
 #include <vrut/specimen/specimen3.hpp>
+#include <vrut/specimen/specimens3.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace {
@@ -240,6 +243,48 @@ TEST_CASE("3D specimen: built on its stones read back from a checkpoint item, th
     nlohmann::json mixed = vrut::stones3_state(fewer);
     mixed["planes"] = state["planes"];  // the counts of one placement, the planes of another
     CHECK_THROWS_AS(vrut::placement_from_stones3_state(mixed, "test"), vrut::CheckpointError);
+  }
+}
+
+// An ensemble's specimens placed two at a time (specimen/specimens3.hpp):
+// each must be the specimen its seed gives alone, and a seed whose
+// specimen cannot be made must be named.
+TEST_CASE("3D specimens of an ensemble placed two at a time: each is its seed's, and a failure names its seed",
+          "[specimen3][placement]") {
+  auto s = vrut_test::small_box3(1, 1);
+  s.sphere_radius = 1.5;
+  const std::vector<std::uint64_t> seeds = {11, 12, 13};
+  std::vector<int> started(seeds.size(), 0), done(seeds.size(), 0);
+  const auto together = vrut::generate_specimens3(
+      s, seeds, 2, [&](std::size_t i) { ++started[i]; }, [&](std::size_t i) { ++done[i]; });
+  REQUIRE(together.size() == seeds.size());
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    INFO("seed " << seeds[i]);
+    CHECK(started[i] == 1);
+    CHECK(done[i] == 1);
+    auto one = s;
+    one.seed = seeds[i];
+    const vrut::Specimen3 alone = vrut::generate_specimen3(one);
+    CHECK(together[i].settings.seed == seeds[i]);
+    REQUIRE(together[i].placement.stones.size() == alone.placement.stones.size());
+    for (std::size_t k = 0; k < alone.placement.stones.size(); ++k)
+      CHECK(together[i].placement.stones[k].shape.vertices == alone.placement.stones[k].shape.vertices);
+    CHECK(together[i].spheres.centers == alone.spheres.centers);
+    CHECK(together[i].spheres.stone == alone.spheres.stone);
+  }
+
+  SECTION("a specimen whose stones find no room: its seed is named") {
+    auto cramped = s;
+    cramped.packing = vrut::StonePacking3::random_addition;  // no compaction to fall back on
+    cramped.placement.attempts = 1;
+    cramped.placement.jiggle_rounds = 0;
+    try {
+      vrut::generate_specimens3(cramped, {21, 22, 23}, 2);
+      FAIL("one try per stone and no jiggling placed a whole 1# specimen");
+    } catch (const vrut::SpecimenSeedError& e) {
+      CHECK(e.seed() == 21);  // every seed fails so; the first in the list is the one told
+      CHECK(std::string(e.what()).rfind("seed 21: cannot reach the stones' volume fraction", 0) == 0);
+    }
   }
 }
 

@@ -113,27 +113,35 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   const nlohmann::json* stones_kept =
       checkpoint.resuming() && checkpoint.header().contains("stones3") ? &checkpoint.header().at("stones3") : nullptr;
   nlohmann::json stones_to_keep = nlohmann::json::object();
+  // Kokkos first: an ensemble places its specimens on as many host threads
+  // as the run has.
+  vrut::KokkosSession kokkos(o.threads);
   std::vector<vrut::Specimen3> specimens;
-  for (std::uint64_t seed : seeds) {
-    ss.seed = seed;
-    const std::string key = std::to_string(seed);
-    if (stones_kept != nullptr) {
+  if (stones_kept != nullptr) {
+    for (std::uint64_t seed : seeds) {
+      ss.seed = seed;
+      const std::string key = std::to_string(seed);
       if (!stones_kept->contains(key))
         throw vrut::CheckpointError(checkpoint.path().string() + " keeps no stones for seed " + key +
                                     ": it is of another run");
       specimens.push_back(vrut::specimen3_on_stones(
           ss, vrut::placement_from_stones3_state(stones_kept->at(key), checkpoint.path().string())));
       std::fprintf(stderr, "seed %s: the stones placed when the run began, from the checkpoint\n", key.c_str());
-      continue;
     }
-    const std::string label = ensemble ? "placing stones, seed " + key : "placing stones";
+  } else {
     try {
-      specimens.push_back(specimen_cli::generate_specimen3_showing_progress(ss, label));
+      if (ensemble) {
+        specimens = specimen_cli::generate_specimens3_showing_progress(
+            ss, seeds, vrut::concurrency(Kokkos::DefaultHostExecutionSpace()));
+      } else {
+        specimens.push_back(specimen_cli::generate_specimen3_showing_progress(ss, "placing stones"));
+      }
     } catch (const std::runtime_error& e) {  // the stones' fraction could not be reached
-      std::cerr << "error: seed " << seed << ": " << e.what() << '\n';
+      std::cerr << "error: " << (ensemble ? "" : "seed " + std::to_string(ss.seed) + ": ") << e.what() << '\n';
       return 1;
     }
-    stones_to_keep[key] = vrut::stones3_state(specimens.back().placement);
+    for (std::size_t e = 0; e < seeds.size(); ++e)
+      stones_to_keep[std::to_string(seeds[e])] = vrut::stones3_state(specimens[e].placement);
   }
   if (stones_kept == nullptr) checkpoint.add_to_header("stones3", std::move(stones_to_keep));
   const vrut::Specimen3& sp = specimens.front();
@@ -144,7 +152,6 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
                ensemble ? "s" : "", ss.gradation.name.c_str(), sp.width, sp.height, sp.depth, all_spheres,
                ensemble ? " in all" : "", sp.placement.stones.size(), ensemble ? " in the first" : "",
                wt.contact_length() * 1e3, sp.depth, wt.loading_time(), wt.loading_time() / num.shift);
-  vrut::KokkosSession kokkos(o.threads);
   int used_threads = 1;
   vrut::ProgressBar bar(ensemble ? "loading " + std::to_string(seeds.size()) + " specimens" : "loading", 1000,
                         "permille");
