@@ -213,7 +213,7 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   j["rigid_stones"] = true;
   j["stone_film"] = o.stone_film;
   j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
-  j["calibrated"] = false;  // 3D has no calibration on 2# yet
+  j["calibrated"] = false;  // 3D fits no constant on 2# (docs/validation.md, "The factor at 1 mm")
   j["wall_seconds"] = wall_seconds;
   j["backend"] = o.backend;
   j["threads"] = used_threads;
@@ -237,7 +237,7 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   char speed_text[128];
   std::snprintf(speed_text, sizeof speed_text, "%zu spheres, %ld steps, %.0f s, %.3g particle-steps/s", all_spheres,
                 res.steps, wall_seconds, speed);
-  print_result(what_was_run, runs, report, wt, ensemble, speed_text, o.out, "; not calibrated in 3D");
+  print_result(what_was_run, runs, report, wt, ensemble, speed_text, o.out, "; 3D fits no constant: docs/validation.md");
   return 0;
 }
 
