@@ -9,6 +9,7 @@
 #include <vrut/geometry/clump3.hpp>
 #include <vrut/integrate/rigid_rotation.hpp>
 
+#include <Eigen/Dense>
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -216,3 +217,42 @@ TEST_CASE("a clump's mass, principal moments and axes match closed forms", "[phy
   CHECK_THROWS(vrut::clump_properties({}, {}, rho));
   CHECK_THROWS(vrut::clump_properties({{0, 0, 0}}, {-r}, rho));
 }
+
+// The mass a clump shows at a member's centre (the time step's, core.md):
+// a dumbbell's in closed form, and any clump's against an independent
+// computation in the world frame: 1 / (1/M + |d|^2 lambda), lambda the
+// largest eigenvalue of the world I^-1 projected on the plane normal to d.
+TEST_CASE("a clump's mass felt at a member: the dumbbell's closed form and the projected inverse inertia",
+          "[physics][bodies]") {
+  const double rho = 2700.0, r = 0.001, m = rho * 4.0 / 3.0 * M_PI * r * r * r;
+  // Two spheres 2 sqrt(6) r apart (third neighbours on an FCC lattice of
+  // spacing 2r): a force through one member, normal to the axis, turns the
+  // pair about a transverse axis, I = 2 (2/5 m r^2 + m a^2), a = sqrt(6) r;
+  // along the axis it only pushes. So M_felt = 1 / (1/(2m) + a^2 / I)
+  // = m / (1/2 + 6/12.8), against m / 8 about the weakest axis (2 x 2/5 m r^2).
+  const vrut::Vec3 u{2.0 / 7.0, 3.0 / 7.0, 6.0 / 7.0}, middle{0.01, -0.02, 0.005};
+  const double a = std::sqrt(6.0) * r;
+  const auto pair = vrut::clump_properties({middle - a * u, middle + a * u}, {r, r}, rho);
+  for (const auto& d : pair.offsets)
+    CHECK(vrut::mass_felt_at_member(pair, d) == Approx(m / (0.5 + 6.0 / 12.8)).epsilon(1e-12));
+  const auto one = vrut::clump_properties({middle}, {r}, rho);
+  CHECK(vrut::mass_felt_at_member(one, one.offsets[0]) == Approx(m).epsilon(1e-14));
+
+  const std::vector<vrut::Vec3> lumpy{{0, 0, 0}, {2 * r, 0, 0}, {4 * r, 0, 0}, {0, 2 * r, 0.5 * r},
+                                      {r, r, 1.4 * r}, {3 * r, -r, 1.4 * r}};
+  const std::vector<double> radii(lumpy.size(), r);
+  const auto body = vrut::clump_properties(lumpy, radii, rho);
+  const Eigen::Matrix3d world_inverse =
+      vrut::sphere_inertia_tensor(lumpy, radii, rho, body.centre).inverse();
+  for (std::size_t i = 0; i < lumpy.size(); ++i) {
+    const vrut::Vec3 d = lumpy[i] - body.centre;
+    const Eigen::Vector3d e = Eigen::Vector3d(d.x, d.y, d.z).normalized();
+    const Eigen::Matrix3d across = Eigen::Matrix3d::Identity() - e * e.transpose();
+    const double lambda =
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(across * world_inverse * across).eigenvalues().maxCoeff();
+    INFO("member " << i);
+    CHECK(vrut::mass_felt_at_member(body, body.offsets[i]) ==
+          Approx(1.0 / (1.0 / body.mass + vrut::dot(d, d) * lambda)).epsilon(1e-10));
+  }
+}
+

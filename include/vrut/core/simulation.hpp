@@ -988,9 +988,8 @@ class Simulation {
             hoff(slot) = c.offsets[k];
             hbody(i) = b;
             hcm(i) = c.mass;
-            // The body as felt at the member's centre, for the time step, about its weakest axis.
-            const Vec3 d = x(i) - c.centre;
-            member_mass[i] = 1.0 / (1.0 / c.mass + dot(d, d) / c.principal_moments.x);
+            // The body as felt at the member's centre, for the time step.
+            member_mass[i] = mass_felt_at_member(c, c.offsets[k]);
             ++slot;
           }
         } else {

@@ -14,6 +14,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -81,6 +82,35 @@ inline ClumpProperties3 clump_properties_of_masses(const std::vector<Vec3>& cent
   c.orientation = normalized(Quaternion{q.w(), q.x(), q.y(), q.z()});
   for (const Vec3& x : centres) c.offsets.push_back(rotate_back(c.orientation, x - c.centre));
   return c;
+}
+
+// The clump's mass as felt at a member's centre (its offset d in the
+// principal frame) by a force through that centre, in the direction that
+// moves the centre most: 1 / (1/M + max over unit n of (d x n)^T I^-1 (d x n)).
+// d x n lies in the plane normal to d and is at most |d| long, so the
+// maximum is |d|^2 times the larger eigenvalue of I^-1 on that plane, not
+// |d|^2 / I_min: a thin clump is light about its long axis, but a force
+// through a member on that axis cannot turn it about it. This sets the time
+// step of contacts on rigid stones (core/simulation.hpp, contact_timestep).
+inline double mass_felt_at_member(const ClumpProperties3& c, Vec3 offset) {
+  const double dd = dot(offset, offset);
+  if (!(dd > 0.0)) return c.mass;
+  const Vec3 inverse{1.0 / c.principal_moments.x, 1.0 / c.principal_moments.y, 1.0 / c.principal_moments.z};
+  // Two unit vectors spanning the plane normal to the offset (the first
+  // normal to the offset's smallest component's axis as well), then I^-1
+  // on them as a 2 x 2 matrix and its larger eigenvalue, in a form without
+  // cancellation (a symmetric clump's two moments can be equal).
+  const Vec3 e = (1.0 / std::sqrt(dd)) * offset;
+  const Vec3 ax = std::abs(e.x) <= std::abs(e.y) && std::abs(e.x) <= std::abs(e.z) ? Vec3{1.0, 0.0, 0.0}
+                  : std::abs(e.y) <= std::abs(e.z)                               ? Vec3{0.0, 1.0, 0.0}
+                                                                                  : Vec3{0.0, 0.0, 1.0};
+  Vec3 p = cross(e, ax);
+  p = (1.0 / norm(p)) * p;
+  const Vec3 q = cross(e, p);
+  const double pp = dot(p, times_each(inverse, p)), qq = dot(q, times_each(inverse, q)),
+               pq = dot(p, times_each(inverse, q));
+  const double larger = 0.5 * (pp + qq) + std::hypot(0.5 * (pp - qq), pq);
+  return 1.0 / (1.0 / c.mass + dd * larger);
 }
 
 inline ClumpProperties3 clump_properties(const std::vector<Vec3>& centres, const std::vector<double>& radii,
