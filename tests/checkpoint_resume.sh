@@ -3,7 +3,8 @@
 #  - a run killed with SIGKILL between checkpoints, resumed with --resume,
 #    ends with the results of the run never stopped, bit for bit;
 #  - Ctrl-C leaves a valid checkpoint beside valid partial results, and
-#    resuming that gives the same results again;
+#    resuming that gives the same results again, also when it comes while
+#    the specimens settle (the run says it stops when the loading begins);
 #  - a 3D ensemble killed and resumed the same way, on the stones its
 #    checkpoint kept (not placed again);
 #  - a damaged checkpoint, and options given beside --resume, are refused.
@@ -99,6 +100,22 @@ grep -q '"interrupted": true' stopped/summary.json 2>/dev/null || fail "no parti
 [[ -s stopped/checkpoint.vrut ]] || fail "Ctrl-C left no checkpoint"
 "$exe" --resume stopped --threads 1 >stopped2.out 2>&1 || fail "--resume after Ctrl-C failed: $(tail -n 3 stopped2.out)"
 same_results whole stopped
+
+# Ctrl-C while settling: the run says it stops at the loading's first
+# sample, does so with a checkpoint, and the resumed run ends as one never
+# stopped. (A longer settling, so that the signal comes while it lasts.)
+long_settle=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 4e3 --settle-steps 60000)
+"$exe" "${long_settle[@]}" --out settled_whole >settled_whole.out 2>&1 || fail "the long-settling run failed"
+"$exe" "${long_settle[@]}" --out settling >settling.out 2>settling.err &
+pid=$!
+wait_for settling.err "settling.*[1-9]0 *%" || fail "no settling progress within 60 s"
+kill -INT "$pid"
+wait "$pid"; code=$?
+[[ $code -eq 130 ]] || fail "Ctrl-C while settling gave exit $code, not 130"
+grep -q "Ctrl-C while settling" settling.err || fail "Ctrl-C while settling is not told: $(tail -n 3 settling.err)"
+[[ -s settling/checkpoint.vrut ]] || fail "Ctrl-C while settling left no checkpoint"
+"$exe" --resume settling >settling2.out 2>&1 || fail "--resume after Ctrl-C while settling failed: $(tail -n 3 settling2.out)"
+same_results settled_whole settling
 
 # Refusals: with exit 2 and a message, and the checkpoint left as it was.
 check_refused() {  # check_refused PATTERN ARGS...

@@ -185,6 +185,8 @@ int main(int argc, char** argv) {
     std::optional<CatchStopSignals> catching(std::in_place);
     if (checkpoint->resuming()) std::fprintf(stderr, "resuming from %s\n", checkpoint->path().c_str());
     std::vector<vrut::RuttingResult> runs;
+    SettlingBar settling(ensemble ? "settling " + std::to_string(seeds.size()) + " specimens" : "settling",
+                         session.root() ? stderr : nullptr);
     try {
       runs = vrut::dispatch_backend(backend, [&](auto space) {
         used_threads = vrut::concurrency(space);
@@ -192,7 +194,8 @@ int main(int argc, char** argv) {
             specimens, wt, mat, num, space,
             [&](double fraction, long) { bar.update(static_cast<long>(1000 * fraction)); },
             // Every rank stops at the same sample, so the curves stay the same length.
-            [&] { return session.any(stop_signal != 0); }, &*checkpoint);
+            [&] { return session.any(stop_signal != 0); }, &*checkpoint,
+            [&](long done, long steps) { settling(done, steps); });
       });
     } catch (const vrut::SimulationUnstable&) {
       std::fprintf(stderr, "\n--timestep-safety sets the time-step safety (%g here)\n", num.timestep_safety);

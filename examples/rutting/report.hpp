@@ -69,7 +69,10 @@ void write_deformation(vrut::OutputDir& output, const std::vector<vrut::RuttingR
     for (auto seed : seeds) csv << ",seed_" << seed << "_mm";
   }
   csv << '\n';
-  std::vector<double> minutes, deformation, low, high;
+  // The plots start at the origin: the plate is set on the highest particle
+  // under it, so the deformation is 0 when the loading starts (and a run
+  // stopped after one sample still draws a line, not an empty range).
+  std::vector<double> minutes{0.0}, deformation{0.0}, low{0.0}, high{0.0};
   const auto& mean = summary.mean_curve.samples;
   for (std::size_t k = 0; k < mean.size(); ++k) {
     csv << mean[k].minutes << ',' << mean[k].reduced_time << ',' << mean[k].deformation * 1e3 << ','
@@ -96,7 +99,7 @@ void write_deformation(vrut::OutputDir& output, const std::vector<vrut::RuttingR
     band.y2 = high;
     series.push_back(band);
     for (std::size_t e = 0; e < runs.size(); ++e) {
-      vrut::PlotSeries one{e == 0 ? "each specimen" : "", {}, {}, "lines lw 1 lc rgb '#bbbbbb'"};
+      vrut::PlotSeries one{e == 0 ? "each specimen" : "", {0.0}, {0.0}, "lines lw 1 lc rgb '#bbbbbb'"};
       for (const auto& smp : runs[e].samples) {
         one.x.push_back(smp.minutes);
         one.y.push_back(smp.deformation * 1e3);

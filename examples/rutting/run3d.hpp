@@ -10,6 +10,7 @@
 #include "options.hpp"
 #include "outputs.hpp"
 #include "report.hpp"
+#include "settling_bar.hpp"
 #include "stop_signal.hpp"
 
 #include <vrut/analysis/standard_ds.hpp>
@@ -159,12 +160,13 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   std::vector<vrut::RuttingResult3> runs3;
   {
     CatchStopSignals catching;
+    SettlingBar settling(ensemble ? "settling " + std::to_string(seeds.size()) + " specimens" : "settling");
     try {
       runs3 = vrut::dispatch_backend(o.backend, [&](auto space) {
         used_threads = vrut::concurrency(space);
         return vrut::run_rutting_ensemble3(
             specimens, wt, mat, num, space, [&](double fraction, long) { bar.update(static_cast<long>(1000 * fraction)); },
-            [&] { return stop_signal != 0; }, &checkpoint);
+            [&] { return stop_signal != 0; }, &checkpoint, [&](long done, long steps) { settling(done, steps); });
       });
     } catch (const vrut::SimulationUnstable&) {
       std::fprintf(stderr, "\n--timestep-safety sets the time-step safety (%g here)\n", num.timestep_safety);

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <cstdio>
 #include <vector>
 
@@ -87,13 +88,16 @@ Kokkos::View<typename Sim::vector*, Kokkos::HostSpace> host_positions_copy(const
   return out;
 }
 
-// Runs `steps` steps, checking the energy against `reference` every 500.
+// Runs `steps` steps, checking the energy against `reference` every 500;
+// after each 500 (and the last), each(steps done, steps) where given.
 template <class Sim, class HostPositions>
-void run_checking_energy(Sim& sim, long steps, double dt, const HostPositions& reference) {
+void run_checking_energy(Sim& sim, long steps, double dt, const HostPositions& reference,
+                         const std::function<void(long, long)>& each = {}) {
   constexpr long every = 500;
   for (long done = 0; done < steps; done += every) {
     sim.run(std::min(every, steps - done), dt);
     check_energy(sim, reference, {}, sim.steps(), dt);
+    if (each) each(std::min(done + every, steps), steps);
   }
 }
 

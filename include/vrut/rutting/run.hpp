@@ -146,6 +146,11 @@ std::pair<int, int> touching_stones(const Sim& sim, const std::vector<int>& ston
 // checkpoints->save(visit) writes the state. When checkpoints->resuming(), the
 // run reads its state with checkpoints->load(visit) in place of settling and
 // goes on from there, with the same results as a run never stopped.
+//
+// settling(steps done, settle steps) follows the settling under gravity,
+// every 500 steps (a resumed run does not settle). stop() is first asked at
+// the loading's first sample, so a stop asked for while settling takes
+// effect there, with a checkpoint of the settled specimens.
 struct NoCheckpoints {
   bool resuming() const { return false; }
   bool due() const { return false; }
@@ -159,7 +164,8 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
                                                 const Space& space = Space(),
                                                 const std::function<void(double, long)>& progress = {},
                                                 const std::function<bool()>& stop = {},
-                                                Checkpoints* checkpoints = nullptr) {
+                                                Checkpoints* checkpoints = nullptr,
+                                                const std::function<void(long, long)>& settling = {}) {
   const bool resuming = checkpoints != nullptr && checkpoints->resuming();
   if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
   num.validate();
@@ -220,7 +226,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   auto energy_reference = host_positions_copy(sim);
   LoadingState<Vec2> state(count);
   std::vector<double>& top = state.top;
-  if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference);
+  if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference, settling);
 
   // The plates, each on the highest disk under it; the load brings it down.
   const double l = wt.contact_length();

@@ -120,14 +120,16 @@ inline std::string mould_position_text(const Vec3& p) {
 // Simulation; the specimens share one box (width, height, depth), sphere
 // size and time step, the smallest any of them needs (its lightest stone
 // sets it), so a specimen goes as its own single run would at that step.
-// progress, stop and checkpoints as in run_rutting_ensemble (run.hpp).
+// progress, stop, checkpoints and settling as in run_rutting_ensemble
+// (run.hpp).
 template <class Space, class Checkpoints = NoCheckpoints>
 std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& specimens, const WheelTracking& wt,
                                                   const RuttingMaterials& mat, const RuttingNumerics& num,
                                                   const Space& space = Space(),
                                                   const std::function<void(double, long)>& progress = {},
                                                   const std::function<bool()>& stop = {},
-                                                  Checkpoints* checkpoints = nullptr) {
+                                                  Checkpoints* checkpoints = nullptr,
+                                                  const std::function<void(long, long)>& settling = {}) {
   const bool resuming = checkpoints != nullptr && checkpoints->resuming();
   if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
   num.validate();
@@ -187,7 +189,7 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
   auto energy_reference = host_positions_copy(sim);
   LoadingState<Vec3> state(count);
   std::vector<double>& top = state.top;
-  if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference);
+  if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference, settling);
 
   // The plates, each on the highest sphere under it, as deep as the specimen
   // (its pressure is its force over l times the depth), endless along it.
