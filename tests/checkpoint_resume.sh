@@ -88,34 +88,31 @@ same_results whole3 killed3
   fail "the resumed 3D ensemble does not say it took both seeds' stones from the checkpoint: $(head -n 5 resumed3.out)"
 ! grep -q "placing stones" resumed3.out || fail "the resumed 3D ensemble placed its stones again"
 
-# Ctrl-C: partial results and a checkpoint, and how to go on.
-"$exe" "${small[@]}" --out stopped >stopped.out 2>stopped.err &
-pid=$!
-wait_for stopped.err "loading.*[1-9]0 *%" || fail "no progress within 60 s"
-kill -INT "$pid"
-wait "$pid"; code=$?
-[[ $code -eq 130 ]] || fail "Ctrl-C gave exit $code, not 130"
-grep -q "go on with: .*--resume stopped" stopped.out || fail "Ctrl-C does not say how to resume: $(cat stopped.out)"
-grep -q '"interrupted": true' stopped/summary.json 2>/dev/null || fail "no partial summary.json"
-[[ -s stopped/checkpoint.vrut ]] || fail "Ctrl-C left no checkpoint"
-"$exe" --resume stopped --threads 1 >stopped2.out 2>&1 || fail "--resume after Ctrl-C failed: $(tail -n 3 stopped2.out)"
-same_results whole stopped
+# Ctrl-C: partial results and a checkpoint, and how to go on; resumed (on
+# one thread), the run ends as one never stopped.
+ctrl_c_and_resume() {  # ctrl_c_and_resume DIR WHOLE_DIR PROGRESS_PATTERN ARGS...
+  local dir=$1 whole_dir=$2 pattern=$3 pid code; shift 3
+  "$exe" "$@" --out "$dir" >"$dir.out" 2>"$dir.err" &
+  pid=$!
+  wait_for "$dir.err" "$pattern" || fail "$dir: no progress within 60 s"
+  kill -INT "$pid"
+  wait "$pid"; code=$?
+  [[ $code -eq 130 ]] || fail "$dir: Ctrl-C gave exit $code, not 130"
+  grep -q "go on with: .*--resume $dir" "$dir.out" || fail "$dir: Ctrl-C does not say how to resume: $(cat "$dir.out")"
+  grep -q '"interrupted": true' "$dir/summary.json" 2>/dev/null || fail "$dir: no partial summary.json"
+  [[ -s $dir/checkpoint.vrut ]] || fail "$dir: Ctrl-C left no checkpoint"
+  "$exe" --resume "$dir" --threads 1 >"$dir.resumed.out" 2>&1 || fail "--resume $dir failed: $(tail -n 3 "$dir.resumed.out")"
+  same_results "$whole_dir" "$dir"
+}
+ctrl_c_and_resume stopped whole "loading.*[1-9]0 *%" "${small[@]}"
 
 # Ctrl-C while settling: the run says it stops at the loading's first
 # sample, does so with a checkpoint, and the resumed run ends as one never
 # stopped. (A longer settling, so that the signal comes while it lasts.)
 long_settle=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 4e3 --settle-steps 60000)
 "$exe" "${long_settle[@]}" --out settled_whole >settled_whole.out 2>&1 || fail "the long-settling run failed"
-"$exe" "${long_settle[@]}" --out settling >settling.out 2>settling.err &
-pid=$!
-wait_for settling.err "settling.*[1-9]0 *%" || fail "no settling progress within 60 s"
-kill -INT "$pid"
-wait "$pid"; code=$?
-[[ $code -eq 130 ]] || fail "Ctrl-C while settling gave exit $code, not 130"
+ctrl_c_and_resume settling settled_whole "settling.*[1-9]0 *%" "${long_settle[@]}"
 grep -q "Ctrl-C while settling" settling.err || fail "Ctrl-C while settling is not told: $(tail -n 3 settling.err)"
-[[ -s settling/checkpoint.vrut ]] || fail "Ctrl-C while settling left no checkpoint"
-"$exe" --resume settling >settling2.out 2>&1 || fail "--resume after Ctrl-C while settling failed: $(tail -n 3 settling2.out)"
-same_results settled_whole settling
 
 # Refusals: with exit 2 and a message, and the checkpoint left as it was.
 check_refused() {  # check_refused PATTERN ARGS...
