@@ -109,7 +109,7 @@ TEST_CASE("checkpoints written by the clock resume, on another backend too", "[c
   vrut_test::require_same(resumed, whole);
 }
 
-TEST_CASE("a checkpoint that is damaged, from another version or of another run is refused", "[checkpoint]") {
+TEST_CASE("a checkpoint that is damaged, from another version, of another run or time step is refused", "[checkpoint]") {
   const vrut_test::ScratchDir scratch("vrut-test-checkpoint");
   const auto path = scratch / "good.vrut";
   {
@@ -142,6 +142,15 @@ TEST_CASE("a checkpoint that is damaged, from another version or of another run 
   const vrut::Checkpoint c = vrut::read_checkpoint(path);
   vrut::write_checkpoint(old, c.header, c.state, "0.0.9");
   CHECK_THROWS_WITH(vrut::read_checkpoint(old), Catch::Contains("written by vrut 0.0.9"));
+
+  // Nor at another time step (as a build whose engine computes another one
+  // would take it): the same steps would be another run.
+  auto faster = vrut::CheckpointFile::resume(path, 0.0);
+  vrut::RuttingNumerics other_step = short_numerics();
+  other_step.timestep_safety *= 1.25;
+  CHECK_THROWS_WITH(vrut::run_rutting<Kokkos::DefaultHostExecutionSpace>(small_specimen(), short_test(), {},
+                                                                         other_step, {}, {}, {}, &faster),
+                    Catch::Contains("written at a time step of"));
 
   // The checkpoint of a 60 mm section cannot go on as a 70 mm one.
   auto wrong = vrut::CheckpointFile::resume(path, 0.0);

@@ -29,7 +29,8 @@
 
 namespace vrut {
 
-inline constexpr int checkpoint_format = 1;
+// 2 (2026-12-03): the loading's time step kept, and checked on resume.
+inline constexpr int checkpoint_format = 2;
 inline constexpr const char* checkpoint_magic = "vrut checkpoint\n";
 
 // A checkpoint that cannot be used: not one, damaged, from another version,
@@ -222,8 +223,11 @@ inline Checkpoint read_checkpoint(const std::filesystem::path& path) {
     throw CheckpointError(name + " is damaged: " + e.what());
   }
   const std::string written_by = doc.value("vrut", std::string("?"));
-  if (doc.value("format", 0) != checkpoint_format || written_by != version)
-    throw CheckpointError(name + " was written by vrut " + written_by + "; this is vrut " + version +
+  const int format = doc.value("format", 0);
+  if (format != checkpoint_format || written_by != version)
+    throw CheckpointError(name + " was written by vrut " + written_by + " in checkpoint format " +
+                          std::to_string(format) + "; this is vrut " + version + ", format " +
+                          std::to_string(checkpoint_format) +
                           ", which resumes only its own checkpoints (run the test again from the start)");
   return {doc.at("header"), doc.at("state")};
 }

@@ -6,7 +6,9 @@
 // between two steps, which every checkpoint holds.
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <functional>
+#include <stdexcept>
 #include <vector>
 
 namespace vrut {
@@ -20,6 +22,7 @@ struct LoadingPlan {
 // Vector: the dimension's (Vec2, Vec3). One entry a specimen in each list.
 template <class Vector>
 struct LoadingState {
+  double dt = 0.0;     // the loading's step, s, reduced: a resumed run must take the one it was written at
   long last_done = 0;  // the steps done when the last checkpoint was written
   int next_sample = 1;
   double last_time = 0.0;                          // of the last sample, s
@@ -28,14 +31,16 @@ struct LoadingState {
   double seconds_before = 0.0, checkpoint_seconds = 0.0;  // wall time of the run before this process
   std::chrono::steady_clock::time_point begin = std::chrono::steady_clock::now();
 
-  explicit LoadingState(int specimens)
-      : top(specimens, 0.0), plate_work(specimens, 0.0), last_impulse(specimens), last_plate_position(specimens) {}
+  LoadingState(int specimens, double step)
+      : dt(step), top(specimens, 0.0), plate_work(specimens, 0.0), last_impulse(specimens),
+        last_plate_position(specimens) {}
 
   double seconds() const {
     return seconds_before + std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   }
   template <class Archive>
   void visit(Archive& archive) {
+    archive.value("loading_dt", dt);
     archive.value("loading_steps_done", last_done);
     archive.value("next_sample", next_sample);
     archive.value("last_sample_time", last_time);
@@ -46,8 +51,22 @@ struct LoadingState {
     checkpoint_seconds = seconds();
     archive.value("wall_seconds", checkpoint_seconds);
   }
-  // After a checkpoint was read: its wall time counts as this run's.
-  void resumed() { seconds_before = checkpoint_seconds; }
+  // After a checkpoint was read: its wall time counts as this run's. Its
+  // step must be the one this run computes: the same steps at another step
+  // would be another run (the engine or a default changed between the build
+  // that wrote it and this one), so that is refused.
+  void resumed(double computed_dt) {
+    if (dt != computed_dt) {
+      char text[400];
+      std::snprintf(text, sizeof text,
+                    "the checkpoint was written at a time step of %.10g s; this build computes %.10g s for the same "
+                    "run (its engine or defaults differ from those of the build that began it): resume with that "
+                    "build, or run the test again from the start",
+                    dt, computed_dt);
+      throw std::invalid_argument(text);
+    }
+    seconds_before = checkpoint_seconds;
+  }
   // At a sample at `time`: plate e's mean pressure since the last sample (its
   // impulse over the time, along its inward normal, on `area`), returned;
   // and its work on the particles, its mean force times its travel.

@@ -224,7 +224,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   // Settling under gravity (a resumed run reads where it had got to instead).
   // The energy check (energy_check.hpp) counts the loads' work from here.
   auto energy_reference = host_positions_copy(sim);
-  LoadingState<Vec2> state(count);
+  LoadingState<Vec2> state(count, dt);
   std::vector<double>& top = state.top;
   if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference, settling);
 
@@ -315,7 +315,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   state.begin = std::chrono::steady_clock::now();
   if (resuming) {
     checkpoints->load(visit);
-    state.resumed();
+    state.resumed(dt);
   }
   auto take_snapshots = [&](long s) {
     if (next_snapshot <= 3 && (s >= steps * next_snapshot / 3)) {

@@ -187,7 +187,7 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
   // Settling (a resumed run reads where it had got to instead); the energy
   // check counts the loads' work from here.
   auto energy_reference = host_positions_copy(sim);
-  LoadingState<Vec3> state(count);
+  LoadingState<Vec3> state(count, dt);
   std::vector<double>& top = state.top;
   if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference, settling);
 
@@ -240,7 +240,7 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
   state.begin = std::chrono::steady_clock::now();
   if (resuming) {
     checkpoints->load(visit);
-    state.resumed();
+    state.resumed(dt);
   }
   auto take_sample = [&](long s, double time) {
     check_inside_moulds(sim, specimens, s, dt);
