@@ -17,11 +17,13 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <thread>
 
 int main(int argc, char** argv) {
   using namespace specimen_cli;
@@ -38,6 +40,10 @@ int main(int argc, char** argv) {
   add_specimen_options(app, o);
   add_specimen3_options(app, o3);
   image_cli::add_image_options(app, io, false);
+  int threads = 0;
+  app.add_option("--threads", threads, "3D: host threads for a compaction (0: all the machine's); the specimen is "
+                 "the same for any count")
+      ->check(CLI::Range(0, 1024))->capture_default_str();
   app.add_option("--out", out, "output folder")->capture_default_str();
   app.add_flag("--force", force, "overwrite an existing output folder");
   if (const int code = cli::parse(app, argc, argv); code >= 0) return code;
@@ -48,7 +54,8 @@ int main(int argc, char** argv) {
         if (app.get_option_no_throw(only2d) && app.count(only2d) > 0)
           throw std::invalid_argument(std::string(only2d) + " is for 2D sections; a 3D specimen has --sphere-radius-mm "
                                       "and --depth-mm, and places its stones by --stone-packing");
-      const vrut::SpecimenSettings3 s3 = to_settings3(o, o3);
+      vrut::SpecimenSettings3 s3 = to_settings3(o, o3);
+      s3.compaction.threads = threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
       // About 0.3 kB a sphere at most (the specimen, its pictures and VTK).
       const double spheres = 4.0 / (std::pow(vrut::fcc_cell(s3.sphere_radius), 3)) * s3.placement.width *
                              s3.placement.height * s3.placement.depth;
@@ -81,7 +88,7 @@ int main(int argc, char** argv) {
                   sp.spheres.centers.size(), sp.spheres.radius, sp.spheres.air_void_achieved, seconds, out.c_str());
       return 0;
     }
-    for (const char* only3d : {"--depth-mm", "--sphere-radius-mm", "--stone-packing"})
+    for (const char* only3d : {"--depth-mm", "--sphere-radius-mm", "--stone-packing", "--threads"})
       if (app.count(only3d) > 0) throw std::invalid_argument(std::string(only3d) + " is for 3D specimens (--dim 3)");
     if (io.images.size() > 1) throw std::invalid_argument("--image: one image at a time (vrut-rutting runs several)");
     if (!io.images.empty()) {

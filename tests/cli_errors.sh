@@ -135,6 +135,8 @@ specimen)
   expect "2" "too small for its stones.*at least twice" -- --dim 3 --depth-mm 20 --width-mm 60 --out m
   expect "1 2" "dim" -- --dim 4 --out n
   expect "2" "stone-packing is for 3D" -- --stone-packing compaction --out o
+  expect "2" "threads is for 3D" -- --threads 2 --out o2
+  expect "1 2" "threads" -- --dim 3 --threads -1 --out o3
   expect "1 2" "stone-packing" -- --dim 3 --stone-packing sideways --out p
   for d in k l m n o p; do
     [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }

@@ -405,3 +405,36 @@ TEST_CASE("3D compaction: the stones reach 0.60 of a small box and share no poin
   }
   CHECK(worst < 1e-9);  // mm: rounding of the turns, on stones of a few mm
 }
+
+// The compaction on several threads (each pair's contact found alone, the
+// forces added in the pairs' order) is the one-thread compaction, bit for
+// bit: the same steps, the same stones where they came to rest.
+TEST_CASE("3D compaction: three threads give the one-thread packing, bit for bit", "[specimen3][placement]") {
+  vrut::Stereology st;
+  st.classes = {{2.36, 4.75}};
+  st.volume_fraction = {0.50};
+  st.coarse_volume_fraction = 0.50;
+  vrut::PlacementSettings3 ps;
+  ps.width = 12.0;
+  ps.height = 10.0;
+  ps.depth = 10.0;
+  vrut::CompactionSettings3 one;
+  one.lid_steps = 2000;
+  vrut::CompactionSettings3 three = one;
+  three.threads = 3;
+  std::mt19937_64 rng_one(8), rng_three(8);
+  const vrut::Placement3 a = vrut::compact_stones3(st, ps, one, rng_one);
+  const vrut::Placement3 b = vrut::compact_stones3(st, ps, three, rng_three);
+  INFO(a.stones.size() << " stones, " << a.compaction_steps << " steps");
+  REQUIRE(a.compaction_steps > one.lid_steps);  // it compacted
+  CHECK(b.compaction_steps == a.compaction_steps);
+  REQUIRE(b.stones.size() == a.stones.size());
+  bool same = true;
+  for (std::size_t k = 0; k < a.stones.size(); ++k)
+    same = same && a.stones[k].shape.vertices == b.stones[k].shape.vertices;
+  CHECK(same);
+  CHECK(rng_one() == rng_three());  // the streams went on alike
+  one.threads = 0;
+  CHECK_THROWS_AS(vrut::compact_stones3(st, ps, one, rng_one), std::invalid_argument);
+}
+

@@ -135,7 +135,9 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
         specimens = specimen_cli::generate_specimens3_showing_progress(
             ss, seeds, vrut::concurrency(Kokkos::DefaultHostExecutionSpace()));
       } else {
-        specimens.push_back(specimen_cli::generate_specimen3_showing_progress(ss, "placing stones"));
+        vrut::SpecimenSettings3 alone = ss;  // one specimen: its compaction (3#) on all the run's threads
+        alone.compaction.threads = vrut::concurrency(Kokkos::DefaultHostExecutionSpace());
+        specimens.push_back(specimen_cli::generate_specimen3_showing_progress(alone, "placing stones"));
       }
     } catch (const std::runtime_error& e) {  // the stones' fraction could not be reached
       std::cerr << "error: " << (ensemble ? "" : "seed " + std::to_string(ss.seed) + ": ") << e.what() << '\n';

@@ -1,7 +1,8 @@
 #pragma once
 // Compaction of a 3D specimen's stones (docs/specimen.md, "Compaction"):
 // where random addition jams short of the stones' volume fraction (3#), the
-// stones are pushed together as a real slab's are. Host-only, serial; mm.
+// stones are pushed together as a real slab's are. Host-only (std::thread
+// where `threads` > 1, with the same packing as one thread); mm.
 // Needs the target vrut::stones3.
 //
 //   1. Random addition (placement3.hpp) places the same stones loosely, at
@@ -33,6 +34,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace vrut {
@@ -43,6 +45,10 @@ struct CompactionSettings3 {
   long settle_steps = 60000;     // at most, the lid held, until nothing overlaps
   double damping_ratio = 0.3;    // of a contact's critical damping
   double drag = 0.002;           // of each stone's velocity, taken off at each settling step
+  // Host threads for the pairs' contacts and the stones' moves. Each pair's
+  // contact is found alone and the forces are added in the pairs' order, so
+  // the packing is the same, bit for bit, for any count.
+  int threads = 1;
 
   void validate() const {
     if (!(loose_fraction > 0.0 && loose_fraction < 0.5))
@@ -51,6 +57,7 @@ struct CompactionSettings3 {
     if (lid_steps < 1 || settle_steps < 1) throw std::invalid_argument("the compaction needs at least one step");
     if (!(damping_ratio >= 0.0 && damping_ratio < 1.0) || !(drag >= 0.0 && drag < 1.0))
       throw std::invalid_argument("the compaction's damping ratio and drag must lie in [0, 1)");
+    if (threads < 1) throw std::invalid_argument("the compaction needs at least one thread");
   }
 };
 
@@ -86,6 +93,30 @@ inline void compacted_centre(const void* object, ccd_vec3_t* out) {
   const Point3 c = s->stone->centre + s->shift;
   ccdVec3Set(out, c.x(), c.y(), c.z());
 }
+
+// body(i) for i in [0, n), on `threads` threads, each a contiguous share.
+template <class Body>
+void for_each_index(std::size_t n, int threads, const Body& body) {
+  const std::size_t parts = std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), std::max<std::size_t>(n, 1));
+  if (parts <= 1) {
+    for (std::size_t i = 0; i < n; ++i) body(i);
+    return;
+  }
+  auto share = [&](std::size_t part) {
+    for (std::size_t i = n * part / parts; i < n * (part + 1) / parts; ++i) body(i);
+  };
+  std::vector<std::thread> others;
+  for (std::size_t part = 1; part < parts; ++part) others.emplace_back(share, part);
+  share(0);
+  for (auto& t : others) t.join();
+}
+
+// One pair's contact in a compaction step: its force on b (a gets the
+// opposite) and the arms from each stone's centre to the contact point.
+struct PairContact {
+  bool touching = false;
+  Point3 force = Point3::Zero(), arm_a = Point3::Zero(), arm_b = Point3::Zero();
+};
 
 }  // namespace detail
 
@@ -197,41 +228,58 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
     }
     return crossed;
   };
+  // Each pair's contact alone (in parallel), then the forces added in the
+  // pairs' order, and the walls' to each stone (in parallel).
+  std::vector<detail::PairContact> contacts;
+  std::vector<char> crossing(stones.size());
   auto loads = [&] {
     for (auto& s : stones) s.force.setZero(), s.torque.setZero();
-    bool overlap = false;
-    for (const Pair& p : pairs) {
-      detail::CompactedStone& a = stones[p.a];
-      detail::CompactedStone& b = stones[p.b];
+    contacts.assign(pairs.size(), {});
+    detail::for_each_index(pairs.size(), cs.threads, [&](std::size_t q) {
+      const Pair& p = pairs[q];
+      const detail::CompactedStone& a = stones[p.a];
+      const detail::CompactedStone& b = stones[p.b];
       const Point3 shift(0.0, 0.0, p.image);
       const double reach = a.reach + b.reach + clearance;
-      if ((b.centre + shift - a.centre).squaredNorm() >= reach * reach) continue;
+      if ((b.centre + shift - a.centre).squaredNorm() >= reach * reach) return;
       detail::ShiftedCompactedStone sa{&a, Point3::Zero(), 0.5 * clearance}, sb{&b, shift, 0.5 * clearance};
       ccd_real_t overlap_depth;
       ccd_vec3_t direction, point;
-      if (ccdMPRPenetration(&sa, &sb, &ccd, &overlap_depth, &direction, &point) != 0) continue;
-      overlap = true;
+      if (ccdMPRPenetration(&sa, &sb, &ccd, &overlap_depth, &direction, &point) != 0) return;
+      detail::PairContact& c = contacts[q];
+      c.touching = true;
       // The direction moves b out of a.
       const Point3 n(ccdVec3X(&direction), ccdVec3Y(&direction), ccdVec3Z(&direction));
       const Point3 at(ccdVec3X(&point), ccdVec3Y(&point), ccdVec3Z(&point));
-      const Point3 arm_a = at - a.centre, arm_b = at - (b.centre + shift);
-      const Point3 relative = (b.velocity + b.spin.cross(arm_b)) - (a.velocity + a.spin.cross(arm_a));
+      c.arm_a = at - a.centre, c.arm_b = at - (b.centre + shift);
+      const Point3 relative = (b.velocity + b.spin.cross(c.arm_b)) - (a.velocity + a.spin.cross(c.arm_a));
       const double reduced_mass = a.mass * b.mass / (a.mass + b.mass);
-      const Point3 f = (k * overlap_depth - 2.0 * cs.damping_ratio * std::sqrt(k * reduced_mass) * relative.dot(n)) * n;
-      b.force += f;
-      b.torque += arm_b.cross(f);
-      a.force -= f;
-      a.torque -= arm_a.cross(f);
+      c.force = (k * overlap_depth - 2.0 * cs.damping_ratio * std::sqrt(k * reduced_mass) * relative.dot(n)) * n;
+    });
+    bool overlap = false;
+    for (std::size_t q = 0; q < pairs.size(); ++q) {
+      const detail::PairContact& c = contacts[q];
+      if (!c.touching) continue;
+      overlap = true;
+      detail::CompactedStone& a = stones[pairs[q].a];
+      detail::CompactedStone& b = stones[pairs[q].b];
+      b.force += c.force;
+      b.torque += c.arm_b.cross(c.force);
+      a.force -= c.force;
+      a.torque -= c.arm_a.cross(c.force);
     }
-    for (auto& s : stones) {
+    detail::for_each_index(stones.size(), cs.threads, [&](std::size_t i) {
+      detail::CompactedStone& s = stones[i];
       const bool floor = wall(s, 1, 0.0, 1.0), top = wall(s, 1, lid, -1.0);
       const bool ends = wall(s, 0, 0.0, 1.0) | wall(s, 0, width, -1.0);
-      overlap = overlap || floor || top || ends;
-    }
+      crossing[i] = floor || top || ends;
+    });
+    for (char c : crossing) overlap = overlap || c;
     return overlap;
   };
   auto advance = [&](double keep) {
-    for (auto& s : stones) {
+    detail::for_each_index(stones.size(), cs.threads, [&](std::size_t i) {
+      detail::CompactedStone& s = stones[i];
       s.velocity = keep * (s.velocity + (dt / s.mass) * s.force);
       s.spin = keep * (s.spin + (dt / s.inertia) * s.torque);
       s.centre += dt * s.velocity;
@@ -243,7 +291,7 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
         const Eigen::Matrix3d r = s.turn.toRotationMatrix();
         for (std::size_t v = 0; v < s.vertices.size(); ++v) s.vertices[v] = r * s.shape.vertices[v];
       }
-    }
+    });
     if (moved_far()) find_pairs();
   };
 

@@ -2,9 +2,10 @@
 // An ensemble's 3D specimens, several at a time on host threads. Each
 // specimen is placed by one thread from its own seed's streams, so it is the
 // specimen generate_specimen3 makes for that seed, whatever the number of
-// threads. Placing stones is serial within a specimen, and a compacted 3#
-// specimen takes about 18 minutes: five of them on two threads take three
-// rounds instead of five. Host-only.
+// threads. A compacted 3# specimen takes about 18 minutes on one thread:
+// five of them on two threads take three rounds instead of five. Threads
+// left over (more workers than seeds) go to each specimen's compaction,
+// which gives the same packing on any count. Host-only.
 #include <vrut/specimen/specimen3.hpp>
 
 #include <algorithm>
@@ -53,10 +54,12 @@ inline std::vector<Specimen3> generate_specimens3(SpecimenSettings3 s, const std
     std::lock_guard<std::mutex> lock(calls);
     f(i);
   };
+  const int threads = std::max(1, std::min<int>(workers, static_cast<int>(seeds.size())));
   auto work = [&] {
     for (std::size_t i = next++; i < seeds.size() && !failed; i = next++) {
       SpecimenSettings3 mine = s;
       mine.seed = seeds[i];
+      mine.compaction.threads = std::max(1, workers / threads);  // the threads left over, where there are
       call(started, i);
       std::size_t last_placed = 0;
       bool placing = false;
@@ -78,7 +81,6 @@ inline std::vector<Specimen3> generate_specimens3(SpecimenSettings3 s, const std
       call(done, i);
     }
   };
-  const int threads = std::max(1, std::min<int>(workers, static_cast<int>(seeds.size())));
   std::vector<std::thread> pool;
   for (int t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
