@@ -185,8 +185,7 @@ int main(int argc, char** argv) {
     std::optional<CatchStopSignals> catching(std::in_place);
     if (checkpoint->resuming()) std::fprintf(stderr, "resuming from %s\n", checkpoint->path().c_str());
     std::vector<vrut::RuttingResult> runs;
-    SettlingBar settling(ensemble ? "settling " + std::to_string(seeds.size()) + " specimens" : "settling",
-                         session.root() ? stderr : nullptr);
+    SettlingBar settling(ensemble ? seeds.size() : 1, session.root() ? stderr : nullptr);
     try {
       runs = vrut::dispatch_backend(backend, [&](auto space) {
         used_threads = vrut::concurrency(space);

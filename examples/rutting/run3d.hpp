@@ -162,7 +162,7 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   std::vector<vrut::RuttingResult3> runs3;
   {
     CatchStopSignals catching;
-    SettlingBar settling(ensemble ? "settling " + std::to_string(seeds.size()) + " specimens" : "settling");
+    SettlingBar settling(ensemble ? seeds.size() : 1);
     try {
       runs3 = vrut::dispatch_backend(o.backend, [&](auto space) {
         used_threads = vrut::concurrency(space);

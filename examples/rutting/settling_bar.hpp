@@ -9,6 +9,7 @@
 #include <vrut/io/progress.hpp>
 
 #include <csignal>
+#include <cstddef>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -17,8 +18,10 @@ namespace {
 
 class SettlingBar {
  public:
-  // out == nullptr: silent (the other ranks of an MPI run).
-  SettlingBar(std::string label, std::FILE* out = stderr) : label_(std::move(label)), out_(out) {}
+  // The settling of `specimens` (more than one: an ensemble's); out ==
+  // nullptr: silent (the other ranks of an MPI run).
+  explicit SettlingBar(std::size_t specimens, std::FILE* out = stderr)
+      : label_(specimens > 1 ? "settling " + std::to_string(specimens) + " specimens" : "settling"), out_(out) {}
 
   void operator()(long done, long steps) {
     if (out_ == nullptr) return;

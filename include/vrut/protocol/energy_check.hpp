@@ -17,8 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <cstdio>
+#include <functional>
 #include <vector>
 
 namespace vrut {

@@ -97,7 +97,7 @@ inline void compacted_centre(const void* object, ccd_vec3_t* out) {
 // body(i) for i in [0, n), on `threads` threads, each a contiguous share.
 template <class Body>
 void for_each_index(std::size_t n, int threads, const Body& body) {
-  const std::size_t parts = std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), std::max<std::size_t>(n, 1));
+  const std::size_t parts = std::min<std::size_t>(std::max(1, threads), n);
   if (parts <= 1) {
     for (std::size_t i = 0; i < n; ++i) body(i);
     return;
