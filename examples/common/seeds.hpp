@@ -1,5 +1,6 @@
 #pragma once
 // Seed lists for ensembles: "1-16", "1,4,9", "1-4,10-12".
+#include <cstddef>
 #include <cstdint>
 #include <set>
 #include <stdexcept>
@@ -7,6 +8,11 @@
 #include <vector>
 
 namespace cli {
+
+// "1 specimen", "3 specimens": an ensemble may be of one seed (--seeds 4).
+inline std::string specimens_text(std::size_t n) {
+  return std::to_string(n) + (n == 1 ? " specimen" : " specimens");
+}
 
 inline std::vector<std::uint64_t> parse_seed_list(const std::string& text) {
   auto bad = [&](const std::string& why) {

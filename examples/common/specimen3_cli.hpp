@@ -1,6 +1,7 @@
 #pragma once
 // The 3D specimen's options, summary and VTK file (vrut-specimen --dim 3).
 #include "cli.hpp"
+#include "seeds.hpp"
 #include "specimen_cli.hpp"
 
 #include <vrut/io/progress.hpp>
@@ -99,7 +100,7 @@ inline std::vector<vrut::Specimen3> generate_specimens3_showing_progress(const v
                                                                        const std::vector<std::uint64_t>& seeds,
                                                                        int workers) {
   const int at_once = std::max(1, std::min<int>(workers, static_cast<int>(seeds.size())));
-  vrut::ProgressBar bar("placing stones, " + std::to_string(seeds.size()) + " specimens, " +
+  vrut::ProgressBar bar("placing stones, " + cli::specimens_text(seeds.size()) + ", " +
                             std::to_string(at_once) + " at a time",
                         static_cast<long>(seeds.size()), "specimens");
   bar.update(0);

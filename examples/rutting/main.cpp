@@ -180,7 +180,7 @@ int main(int argc, char** argv) {
       output->require_space(4'000'000 + 200 * sp.disks.centers.size() + 2 * 1'200 * my_disks * session.size());
     vrut::KokkosSession kokkos(o.threads);
     int used_threads = 1;
-    vrut::ProgressBar bar(ensemble ? "loading " + std::to_string(seeds.size()) + " specimens" : "loading", 1000,
+    vrut::ProgressBar bar(ensemble ? "loading " + cli::specimens_text(seeds.size()) : "loading", 1000,
                           "permille", session.root() ? stderr : nullptr);
     std::optional<CatchStopSignals> catching(std::in_place);
     if (checkpoint->resuming()) std::fprintf(stderr, "resuming from %s\n", checkpoint->path().c_str());

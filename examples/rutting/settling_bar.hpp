@@ -4,6 +4,7 @@
 // SIGTERM comes while it settles. The run only stops at the loading's first
 // sample, where its checkpoint keeps the settled specimens, so the line says
 // so rather than leave a long settling silent.
+#include "../common/seeds.hpp"
 #include "stop_signal.hpp"
 
 #include <vrut/io/progress.hpp>
@@ -21,7 +22,7 @@ class SettlingBar {
   // The settling of `specimens` (more than one: an ensemble's); out ==
   // nullptr: silent (the other ranks of an MPI run).
   explicit SettlingBar(std::size_t specimens, std::FILE* out = stderr)
-      : label_(specimens > 1 ? "settling " + std::to_string(specimens) + " specimens" : "settling"), out_(out) {}
+      : label_(specimens > 1 ? "settling " + cli::specimens_text(specimens) : "settling"), out_(out) {}
 
   void operator()(long done, long steps) {
     if (out_ == nullptr) return;
