@@ -99,6 +99,20 @@ TEST_CASE("a DS whose deformation the curve cannot resolve is a lower bound", "[
   CHECK(two_flat.dynamic_stability_median_is_lower_bound);
 }
 
+TEST_CASE("a median is a lower bound where a bound sorts at or below the middle", "[analysis][unit]") {
+  // 100, 200, 600 with one of them only a lower bound: the median 200 is
+  // only a lower bound if that bound's true value can lift it, which 100's
+  // (it may be 1000: median 600) and 200's can and 600's cannot.
+  CHECK(vrut::median_is_lower_bound({{600.0, false}, {100.0, true}, {200.0, false}}));
+  CHECK(vrut::median_is_lower_bound({{600.0, false}, {100.0, false}, {200.0, true}}));
+  CHECK_FALSE(vrut::median_is_lower_bound({{600.0, true}, {100.0, false}, {200.0, false}}));
+  // Even: the median (200 + 600) / 2 rises with either middle value or one
+  // below them, not with one above.
+  CHECK(vrut::median_is_lower_bound({{100.0, true}, {200.0, false}, {600.0, false}, {900.0, false}}));
+  CHECK(vrut::median_is_lower_bound({{100.0, false}, {200.0, false}, {600.0, true}, {900.0, false}}));
+  CHECK_FALSE(vrut::median_is_lower_bound({{100.0, false}, {200.0, false}, {600.0, false}, {900.0, true}}));
+}
+
 // The DS as the standard writes it (analysis/standard_ds.hpp): capped at
 // 6000 passes/mm, "> 6000"; and the median of censored values, worked by hand.
 TEST_CASE("the standard caps a DS at 6000 and keeps a lower bound a lower bound", "[analysis][unit]") {

@@ -20,11 +20,23 @@ struct RuttingEnsembleSummary {
   std::vector<double> deformation_sd;  // m, standard deviation at each sample (0 for one specimen)
   std::vector<double> deformation_ci_low, deformation_ci_high;  // m, of the mean at each sample
   // Specimens whose DS is only a lower bound (RuttingResult). With any, the
-  // mean and its interval are lower bounds too; the median is one where the
-  // bounds reach the middle of the sorted values.
+  // mean and its interval are lower bounds too; the median is one where a
+  // bound sorts at or below the middle (median_is_lower_bound).
   int dynamic_stability_lower_bounds = 0;
   bool dynamic_stability_median_is_lower_bound = false;
 };
+
+// Whether the median of DS values, each (value, only a lower bound), is only
+// a lower bound: where a bound sorts at or below the middle (the upper of
+// the two middle values for an even count), since its true value may lie
+// above the middle and lift the median. A bound above the middle cannot.
+inline bool median_is_lower_bound(std::vector<std::pair<double, bool>> values) {
+  if (values.empty()) throw std::invalid_argument("the median of no values");
+  std::sort(values.begin(), values.end());
+  for (std::size_t i = 0; i <= values.size() / 2; ++i)
+    if (values[i].second) return true;
+  return false;
+}
 
 inline RuttingEnsembleSummary summarize_rutting(const std::vector<RuttingResult>& runs, const WheelTracking& wt,
                                                 double confidence = 0.95) {
@@ -44,15 +56,12 @@ inline RuttingEnsembleSummary summarize_rutting(const std::vector<RuttingResult>
   out.deformation_at_ds_start = describe(d45, confidence);
   out.deformation_final = describe(d60, confidence);
   out.dynamic_stability = describe(ds, confidence);
-  std::vector<std::pair<double, bool>> sorted;
+  std::vector<std::pair<double, bool>> values;
   for (const auto& r : runs) {
-    sorted.emplace_back(r.dynamic_stability, r.dynamic_stability_is_lower_bound);
+    values.emplace_back(r.dynamic_stability, r.dynamic_stability_is_lower_bound);
     out.dynamic_stability_lower_bounds += r.dynamic_stability_is_lower_bound ? 1 : 0;
   }
-  std::sort(sorted.begin(), sorted.end());
-  const std::size_t n = sorted.size();
-  out.dynamic_stability_median_is_lower_bound =
-      sorted[n / 2].second || (n % 2 == 0 && sorted[n / 2 - 1].second);
+  out.dynamic_stability_median_is_lower_bound = median_is_lower_bound(values);
   out.mean_curve.samples = runs.front().samples;
   out.mean_curve.interrupted = runs.front().interrupted;
   for (std::size_t k = 0; k < samples; ++k) {
