@@ -10,6 +10,7 @@
 // them today, so that ensembles run before it did get them too.
 //
 //   vrut-ds-resample [--within 0.15] out/mix1/seeds.csv out/mix2/seeds.csv ...
+#include <vrut/analysis/seeds_csv.hpp>
 #include <vrut/analysis/standard_ds.hpp>
 
 #include <CLI/CLI.hpp>
@@ -17,20 +18,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace {
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream in(line);
-  std::string cell;
-  while (std::getline(in, cell, ',')) out.push_back(cell);
-  return out;
-}
 
 // A seeds.csv: each specimen's DS as the standard reports it, and its
 // deformation from minute 45 to the end (mm).
@@ -39,31 +31,15 @@ struct Ensemble {
   std::vector<double> window_mm;
 };
 
-Ensemble read_seeds_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error(path + " is empty");
-  const auto header = split(line);
-  int ds = -1, bound = -1, at_45 = -1, at_end = -1;
-  for (int i = 0; i < static_cast<int>(header.size()); ++i) {
-    if (header[i] == "dynamic_stability_passes_per_mm") ds = i;
-    if (header[i] == "dynamic_stability_is_lower_bound") bound = i;
-    if (header[i] == "deformation_45min_mm") at_45 = i;
-    if (header[i] == "deformation_60min_mm") at_end = i;
-  }
-  if (ds < 0 || bound < 0 || at_45 < 0 || at_end < 0)
-    throw std::runtime_error(path + " has no DS or deformation columns: is it a vrut-rutting seeds.csv?");
+Ensemble read_ensemble(const std::string& path) {
   Ensemble out;
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    const auto cells = split(line);
-    if (static_cast<int>(cells.size()) <= std::max({ds, bound, at_45, at_end}))
-      throw std::runtime_error(path + ": a short line: " + line);
-    out.ds.push_back(vrut::report_ds(std::stod(cells[ds]), cells[bound] == "1"));
-    out.window_mm.push_back(std::stod(cells[at_end]) - std::stod(cells[at_45]));
+  for (const auto& row : vrut::read_seeds_csv(path).rows) {
+    if (row.stopped)
+      throw std::runtime_error(path + ": seed " + std::to_string(row.seed) +
+                               " was stopped before its end (no DS): resume it first");
+    out.ds.push_back(vrut::report_ds(row.dynamic_stability, row.dynamic_stability_is_lower_bound));
+    out.window_mm.push_back(row.deformation_60min_mm - row.deformation_45min_mm);
   }
-  if (out.ds.empty()) throw std::runtime_error(path + " lists no specimen");
   return out;
 }
 
@@ -84,7 +60,7 @@ int main(int argc, char** argv) {
   try {
     const std::vector<int> counts = {3, 5, 8, 10, 16, 20, 30, 40, 60, 80, 120, 160, 240, 320};
     for (const auto& f : files) {
-      const Ensemble e = read_seeds_csv(f);
+      const Ensemble e = read_ensemble(f);
       const auto& ds = e.ds;
       const auto median = vrut::censored_median(ds);
       int censored = 0;

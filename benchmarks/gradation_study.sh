@@ -9,6 +9,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 exe=${VRUT_RUTTING:-$here/build/examples/vrut-rutting}
+pool=${VRUT_POOL:-$(dirname "$exe")/vrut-pool}
 [ $# -ge 3 ] || { echo "usage: $0 OUTDIR SEEDS LABEL [vrut-rutting options...]" >&2; exit 2; }
 out=$1 seeds=$2 label=$3
 shift 3
@@ -20,7 +21,7 @@ for mix in 1 2 3; do
     "$exe" --gradation "$mix" --seeds "$seeds" --out "$dir" --force "$@" >"$out/mix$mix.log" 2>&1 ||
       { echo "mix $mix failed, see $out/mix$mix.log" >&2; exit 1; }
   fi
-  row=$("$here/benchmarks/seeds_summary.sh" --cells "$dir/seeds.csv")
+  row=$("$pool" --cells "$dir/seeds.csv")
   cells+="${row% | *} | "
   [ "$mix" = 1 ] && mean1=${row##* | }
   [ "$mix" = 3 ] && mean3=${row##* | }

@@ -359,8 +359,7 @@ rutting)
   [[ -n "$alone" && "$alone" == "$inside" ]] ||
     { echo "FAIL: seed 1 in the ensemble differs from its single run"; failures=$((failures + 1)); }
   # An ensemble of one seed (a specimen to pool with other runs' by
-  # benchmarks/seeds_summary.sh) says it has no interval, not "nan", and
-  # writes its seeds.csv.
+  # vrut-pool) says it has no interval, not "nan", and writes its seeds.csv.
   expect "0" "1 specimen: rut depth [0-9.]+ mm at [0-9]+ min \(one specimen, no interval\), dynamic stability: mean [0-9]+ \(no interval\)" \
     -- "${small[@]}" --seeds 2 --out ens_one
   [[ $(wc -l <"$work/ens_one/seeds.csv") -eq 2 ]] || { echo "FAIL: the one-seed ensemble's seeds.csv"; failures=$((failures + 1)); }

@@ -7,6 +7,7 @@
 #include "outputs.hpp"
 
 #include <vrut/analysis/rutting_ensemble.hpp>
+#include <vrut/analysis/seeds_csv.hpp>
 #include <vrut/analysis/standard_ds.hpp>
 #include <vrut/io/output_dir.hpp>
 #include <vrut/io/plot.hpp>
@@ -123,10 +124,7 @@ void write_seeds_csv(vrut::OutputDir& output, const std::vector<vrut::RuttingRes
                      const std::string& facts_columns, bool interrupted, const std::vector<std::string>& images = {}) {
   std::ostringstream per_seed;
   per_seed.precision(17);
-  per_seed << "seed," << facts_columns << ",rut_depth_mm,deformation_45min_mm,"
-              "deformation_60min_mm,dynamic_stability_passes_per_mm,dynamic_stability_is_lower_bound,"
-              "deformation_resolution_mm,stones,stone_pairs_touching,steps,ds_standard_passes_per_mm,"
-              "ds_standard_censored"
+  per_seed << "seed," << facts_columns << ',' << vrut::seeds_csv_result_columns
            << (images.empty() ? "\n" : ",image\n");
   for (std::size_t e = 0; e < runs.size(); ++e) {
     per_seed << seeds[e] << ',' << runs[e].particles << ',' << facts[e].aggregates << ','
@@ -237,8 +235,8 @@ void print_result(const std::string& what_was_run, const std::vector<vrut::Rutti
     const auto& r = summary.rut_depth;
     const auto& d = summary.dynamic_stability;
     const bool any_bound = summary.dynamic_stability_lower_bounds > 0;
-    // One seed (--seeds 4, to be pooled with other runs by
-    // benchmarks/seeds_summary.sh) has no spread: say so rather than print nan.
+    // One seed (--seeds 4, to be pooled with other runs by vrut-pool) has
+    // no spread: say so rather than print nan.
     const bool spread = r.n > 1;
     char rut_spread[96] = "one specimen, no interval";
     if (spread) std::snprintf(rut_spread, sizeof rut_spread, "sd %.2f, 95 %% CI %.2f to %.2f", r.sd, r.ci_low, r.ci_high);
