@@ -93,7 +93,8 @@ inline vrut::Specimen3 generate_specimen3_showing_progress(const vrut::SpecimenS
       });
 }
 
-// An ensemble's specimens, `workers` at a time (specimen/specimens3.hpp),
+// An ensemble's specimens, `workers` at a time (specimen/specimens3.hpp;
+// workers left over, more than seeds, go to each specimen's compaction),
 // with one bar that counts the finished specimens and a line for each that
 // compacts. A specimen that cannot be made throws vrut::SpecimenSeedError.
 inline std::vector<vrut::Specimen3> generate_specimens3_showing_progress(const vrut::SpecimenSettings3& s,
@@ -106,7 +107,7 @@ inline std::vector<vrut::Specimen3> generate_specimens3_showing_progress(const v
   bar.update(0);
   long finished = 0;
   auto specimens = vrut::generate_specimens3(
-      s, seeds, at_once, {},
+      s, seeds, workers, {},
       [&](std::size_t) {
         if (++finished == static_cast<long>(seeds.size())) bar.finish();
         else bar.update(finished);
@@ -128,7 +129,10 @@ inline nlohmann::json specimen3_summary(const vrut::Specimen3& sp) {
   j["periodic"] = "depth (z)";
   j["stones_jammed"] = sp.placement.jammed;  // found no room in random tries: jiggled in
   j["stone_packing"] = sp.placement.compaction_steps > 0 ? "compaction" : "random addition";
-  if (sp.placement.compaction_steps > 0) j["compaction_steps"] = sp.placement.compaction_steps;
+  if (sp.placement.compaction_steps > 0) {
+    j["compaction_steps"] = sp.placement.compaction_steps;
+    j["compaction_threads"] = sp.settings.compaction.threads;  // the same packing on any count
+  }
   j["stone_volume_fraction"] = {{"target", sp.placement.target_fraction}, {"achieved", sp.placement.achieved_fraction}};
   j["air_void_fraction"] = {{"target", sp.spheres.air_void_target}, {"achieved", sp.spheres.air_void_achieved}};
   j["sphere_radius_mm"] = sp.spheres.radius;
