@@ -33,10 +33,7 @@ struct Ensemble {
 
 Ensemble read_ensemble(const std::string& path) {
   Ensemble out;
-  for (const auto& row : vrut::read_seeds_csv(path).rows) {
-    if (row.stopped)
-      throw std::runtime_error(path + ": seed " + std::to_string(row.seed) +
-                               " was stopped before its end (no DS): resume it first");
+  for (const auto& row : vrut::read_finished_seeds_csv(path).rows) {
     out.ds.push_back(vrut::report_ds(row.dynamic_stability, row.dynamic_stability_is_lower_bound));
     out.window_mm.push_back(row.deformation_60min_mm - row.deformation_45min_mm);
   }

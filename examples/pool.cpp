@@ -38,15 +38,12 @@ std::vector<vrut::SeedRow> pool(const std::vector<std::string>& files) {
   std::map<std::uint64_t, std::string> file_of_seed;
   std::string header;
   for (const auto& f : files) {
-    const vrut::SeedsTable table = vrut::read_seeds_csv(f);
+    const vrut::SeedsTable table = vrut::read_finished_seeds_csv(f);
     if (header.empty()) header = table.header;
     if (table.header != header) throw std::runtime_error(f + ": its columns differ from those of " + files.front());
     for (const auto& row : table.rows) {
       const auto [at, fresh] = file_of_seed.emplace(row.seed, f);
       if (!fresh) throw std::runtime_error("seed " + std::to_string(row.seed) + " is in " + at->second + " and in " + f);
-      if (row.stopped)
-        throw std::runtime_error(f + ": seed " + std::to_string(row.seed) +
-                                 " was stopped before its end (no DS): resume it first");
       rows.push_back(row);
     }
   }

@@ -91,4 +91,15 @@ inline SeedsTable read_seeds_csv(const std::string& path) {
   return table;
 }
 
+// read_seeds_csv, refusing a run stopped before its end: its specimens have
+// no DS to pool or resample.
+inline SeedsTable read_finished_seeds_csv(const std::string& path) {
+  SeedsTable table = read_seeds_csv(path);
+  for (const auto& row : table.rows)
+    if (row.stopped)
+      throw std::runtime_error(path + ": seed " + std::to_string(row.seed) +
+                               " was stopped before its end (no DS): resume it first");
+  return table;
+}
+
 }  // namespace vrut
