@@ -71,7 +71,15 @@ struct CompactedStone {
   Point3 centre = Point3::Zero(), velocity = Point3::Zero(), spin = Point3::Zero();
   Point3 force = Point3::Zero(), torque = Point3::Zero();
   double mass = 0.0, inertia = 0.0, reach = 0.0;
+  long wraps = 0;  // whole depths taken off the centre's z, to keep it in [0, depth)
 };
+
+// The shift along the periodic depth that puts b's image beside a: the image
+// the pair was found with, moved by a whole depth for each time either stone
+// has wrapped across the depth since (its centre kept in [0, depth)).
+inline double pair_image(double image_at_search, long a_wraps_since, long b_wraps_since, double depth) {
+  return image_at_search + depth * static_cast<double>(b_wraps_since - a_wraps_since);
+}
 
 // The stone as libccd sees it, shifted (a periodic image) and grown by
 // `margin` all round (the Minkowski sum with a ball).
@@ -115,6 +123,7 @@ void for_each_index(std::size_t n, int threads, const Body& body) {
 // opposite) and the arms from each stone's centre to the contact point.
 struct PairContact {
   bool touching = false;
+  double depth = 0.0;  // of the overlap, less the clearance kept between stones
   Point3 force = Point3::Zero(), arm_a = Point3::Zero(), arm_b = Point3::Zero();
 };
 
@@ -173,10 +182,14 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
   // The pairs whose centres lie within their reaches and two skins (with the
   // image across the depth), found again when a stone's centre has moved
   // half a skin: by the reach, not the bounding box, which changes as a
-  // stone turns about its centre.
+  // stone turns about its centre. A stone that wraps across the depth between
+  // two searches moves its pairs' images (pair_image); before 2026-12-03 it
+  // did not, and its contacts with the stones across went unseen until the
+  // next search: two of 3#'s five specimens ended with stones overlapping.
   struct Pair {
     int a, b;
-    double image;
+    double image;          // as found
+    long a_wraps, b_wraps;  // the stones' wraps when found
   };
   std::vector<Pair> pairs;
   std::vector<Point3> centre_at_search(stones.size());
@@ -198,7 +211,7 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
         const double reach = stones[i].reach + stones[j].reach + 2.0 * skin;
         for (double image : {0.0, -depth, depth})
           if ((stones[j].centre + Point3(0.0, 0.0, image) - stones[i].centre).squaredNorm() < reach * reach)
-            pairs.push_back({static_cast<int>(i), j, image});
+            pairs.push_back({static_cast<int>(i), j, image, stones[i].wraps, stones[j].wraps});
         return false;
       });
   };
@@ -232,6 +245,10 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
   // pairs' order, and the walls' to each stone (in parallel).
   std::vector<detail::PairContact> contacts;
   std::vector<char> crossing(stones.size());
+  // Of the last loads, for the error below: the pairs within the clearance
+  // and the deepest overlap among them.
+  long touching_pairs = 0;
+  double deepest = 0.0;
   auto loads = [&] {
     for (auto& s : stones) s.force.setZero(), s.torque.setZero();
     contacts.assign(pairs.size(), {});
@@ -239,7 +256,7 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
       const Pair& p = pairs[q];
       const detail::CompactedStone& a = stones[p.a];
       const detail::CompactedStone& b = stones[p.b];
-      const Point3 shift(0.0, 0.0, p.image);
+      const Point3 shift(0.0, 0.0, detail::pair_image(p.image, a.wraps - p.a_wraps, b.wraps - p.b_wraps, depth));
       const double reach = a.reach + b.reach + clearance;
       if ((b.centre + shift - a.centre).squaredNorm() >= reach * reach) return;
       detail::ShiftedCompactedStone sa{&a, Point3::Zero(), 0.5 * clearance}, sb{&b, shift, 0.5 * clearance};
@@ -248,6 +265,7 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
       if (ccdMPRPenetration(&sa, &sb, &ccd, &overlap_depth, &direction, &point) != 0) return;
       detail::PairContact& c = contacts[q];
       c.touching = true;
+      c.depth = overlap_depth - clearance;
       // The direction moves b out of a.
       const Point3 n(ccdVec3X(&direction), ccdVec3Y(&direction), ccdVec3Z(&direction));
       const Point3 at(ccdVec3X(&point), ccdVec3Y(&point), ccdVec3Z(&point));
@@ -257,10 +275,12 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
       c.force = (k * overlap_depth - 2.0 * cs.damping_ratio * std::sqrt(k * reduced_mass) * relative.dot(n)) * n;
     });
     bool overlap = false;
+    touching_pairs = 0, deepest = 0.0;
     for (std::size_t q = 0; q < pairs.size(); ++q) {
       const detail::PairContact& c = contacts[q];
       if (!c.touching) continue;
       overlap = true;
+      ++touching_pairs, deepest = std::max(deepest, c.depth);
       detail::CompactedStone& a = stones[pairs[q].a];
       detail::CompactedStone& b = stones[pairs[q].b];
       b.force += c.force;
@@ -283,7 +303,9 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
       s.velocity = keep * (s.velocity + (dt / s.mass) * s.force);
       s.spin = keep * (s.spin + (dt / s.inertia) * s.torque);
       s.centre += dt * s.velocity;
-      s.centre.z() -= depth * std::floor(s.centre.z() / depth);
+      const double across = std::floor(s.centre.z() / depth);
+      s.centre.z() -= depth * across;
+      s.wraps += static_cast<long>(across);
       const double angle = dt * s.spin.norm();
       if (angle > 0.0) {
         s.turn = Eigen::Quaterniond(Eigen::AngleAxisd(angle, s.spin.normalized())) * s.turn;
@@ -339,9 +361,18 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
   }
   if (!settled || overlapping > 0 || outside > 0) {
     std::ostringstream msg;
-    msg << "cannot compact the stones to the volume fraction " << volume / (width * height * depth) << " in "
-        << cs.settle_steps << " settling steps: " << overlapping << " pairs still overlap and " << outside
-        << " stones cross a wall";
+    msg << "cannot compact the stones to the volume fraction " << volume / (width * height * depth);
+    if (!settled) {
+      long crossing_stones = 0;
+      for (char c : crossing) crossing_stones += c;
+      msg << ": after " << cs.settle_steps << " settling steps " << touching_pairs
+          << " pairs still lie within the clearance (the deepest overlap " << deepest << " mm) and "
+          << crossing_stones << " stones against a wall;";
+    } else {
+      msg << ": settled in " << step - cs.lid_steps << " steps, but";
+    }
+    msg << " the placement's test finds " << overlapping << " pairs overlapping and " << outside
+        << " stones crossing a wall";
     throw std::runtime_error(msg.str());
   }
   out.achieved_fraction = volume / (width * height * depth);
