@@ -49,6 +49,23 @@ void check_points_in_stones(const vrut::Placement3& p, const vrut::PlacementSett
   CHECK(std::abs(static_cast<double>(in) / n - f) < 4.0 * se);
 }
 
+// The stones of 2.36 to 4.75 mm alone, at `fraction` of the box.
+vrut::Stereology small_stones(double fraction) {
+  vrut::Stereology st;
+  st.classes = {{2.36, 4.75}};
+  st.volume_fraction = {fraction};
+  st.coarse_volume_fraction = fraction;
+  return st;
+}
+
+vrut::PlacementSettings3 box3(double width, double height, double depth) {
+  vrut::PlacementSettings3 ps;
+  ps.width = width;
+  ps.height = height;
+  ps.depth = depth;
+  return ps;
+}
+
 }  // namespace
 
 TEST_CASE("3D stones: the hull of a cube's and an octahedron's corners, by hand", "[specimen3][unit]") {
@@ -369,10 +386,7 @@ TEST_CASE("3D compaction: the stones reach 0.60 of a small box and share no poin
   st.classes = {{2.36, 4.75}, {4.75, 9.5}};
   st.volume_fraction = {0.20, 0.40};
   st.coarse_volume_fraction = 0.60;
-  vrut::PlacementSettings3 ps;
-  ps.width = 30.0;
-  ps.height = 25.0;
-  ps.depth = 20.0;
+  const vrut::PlacementSettings3 ps = box3(30.0, 25.0, 20.0);
   const vrut::CompactionSettings3 cs;  // about 11,000 steps, 10 s
   std::mt19937_64 rng(5), loose_rng(5);
   const vrut::Placement3 p = vrut::compact_stones3(st, ps, cs, rng);
@@ -415,14 +429,8 @@ TEST_CASE("3D compaction: the stones reach 0.60 of a small box and share no poin
 // specimens of 300 x 50 x 42 mm. The packing is checked by means the
 // compaction does not use (random points, as above).
 TEST_CASE("3D compaction: a stone that wraps across the depth keeps its contacts", "[specimen3][placement]") {
-  vrut::Stereology st;
-  st.classes = {{2.36, 4.75}};
-  st.volume_fraction = {0.60};
-  st.coarse_volume_fraction = 0.60;
-  vrut::PlacementSettings3 ps;
-  ps.width = 15.0;
-  ps.height = 12.0;
-  ps.depth = 10.0;
+  const vrut::Stereology st = small_stones(0.60);
+  const vrut::PlacementSettings3 ps = box3(15.0, 12.0, 10.0);
   const vrut::CompactionSettings3 cs;  // about 9,000 steps, 5 s a seed
   for (const unsigned seed : {1u, 2u, 5u}) {
     INFO("seed " << seed);
@@ -438,14 +446,8 @@ TEST_CASE("3D compaction: a stone that wraps across the depth keeps its contacts
 // forces added in the pairs' order) is the one-thread compaction, bit for
 // bit: the same steps, the same stones where they came to rest.
 TEST_CASE("3D compaction: three threads give the one-thread packing, bit for bit", "[specimen3][placement]") {
-  vrut::Stereology st;
-  st.classes = {{2.36, 4.75}};
-  st.volume_fraction = {0.50};
-  st.coarse_volume_fraction = 0.50;
-  vrut::PlacementSettings3 ps;
-  ps.width = 12.0;
-  ps.height = 10.0;
-  ps.depth = 10.0;
+  const vrut::Stereology st = small_stones(0.50);
+  const vrut::PlacementSettings3 ps = box3(12.0, 10.0, 10.0);
   vrut::CompactionSettings3 one;
   one.lid_steps = 2000;
   vrut::CompactionSettings3 three = one;
