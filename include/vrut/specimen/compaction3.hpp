@@ -183,9 +183,10 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
   // image across the depth), found again when a stone's centre has moved
   // half a skin: by the reach, not the bounding box, which changes as a
   // stone turns about its centre. A stone that wraps across the depth between
-  // two searches moves its pairs' images (pair_image); before 2026-12-03 it
-  // did not, and its contacts with the stones across went unseen until the
-  // next search: two of 3#'s five specimens ended with stones overlapping.
+  // two searches moves its pairs' images (pair_image): otherwise its contacts
+  // with the stones across the depth go unseen until the next search, and
+  // late in the settling, when nothing moves far, that may never come
+  // (docs/specimen.md, "Compaction").
   struct Pair {
     int a, b;
     double image;          // as found
@@ -327,6 +328,7 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
     if (compacting && step % 100 == 0) compacting(step, most);
   }
   lid = height;
+  const long settling_from = step;
   bool settled = false;
   for (; step < most && !settled; ++step) {
     settled = !loads();
@@ -369,7 +371,7 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
           << " pairs still lie within the clearance (the deepest overlap " << deepest << " mm) and "
           << crossing_stones << " stones against a wall;";
     } else {
-      msg << ": settled in " << step - cs.lid_steps << " steps, but";
+      msg << ": settled in " << step - settling_from << " steps, but";
     }
     msg << " the placement's test finds " << overlapping << " pairs overlapping and " << outside
         << " stones crossing a wall";
