@@ -7,7 +7,11 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace vrut_test {
 
@@ -61,6 +65,47 @@ inline void require_same(const vrut::RuttingResult& a, const vrut::RuttingResult
   REQUIRE(same_bits(a.dynamic_stability, b.dynamic_stability));
   REQUIRE(same_bits(a.deformation_resolution, b.deformation_resolution));
   REQUIRE(a.dynamic_stability_is_lower_bound == b.dynamic_stability_is_lower_bound);
+  REQUIRE(a.stones == b.stones);
+  REQUIRE(a.stone_pairs_touching == b.stone_pairs_touching);
+}
+
+// A regression pin: what a run gave when its model was frozen, renewed only
+// on purpose (a deliberate recalibration or a new order of summation, said in
+// the commit and in the docs). Runs are deterministic (every sum in a fixed
+// order, on any backend and thread count), so each number is compared bit
+// for bit: the rut, the rut at the DS window's start, the DS, and the curve
+// at a few samples (index, deformation in mm).
+struct RuttingPin {
+  double rut_mm, at_ds_start_mm, ds;
+  std::vector<std::pair<std::size_t, double>> curve_mm;
+};
+
+// Every digit a double needs to be read back as the same bits.
+inline std::string exact_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+inline void check_pinned(const vrut::RuttingResult& res, const RuttingPin& pin) {
+  // Printed whole, so that a deliberate renewal copies them from the log.
+  std::string curve;
+  for (const auto& [k, mm] : pin.curve_mm)
+    curve += " {" + std::to_string(k) + ", " +
+             (k < res.samples.size() ? exact_text(res.samples[k].deformation * 1e3) : std::string("none")) + "}";
+  std::printf("pinned run: rut %s mm, at the DS window's start %s mm, DS %s, curve%s\n",
+              exact_text(res.deformation_final * 1e3).c_str(), exact_text(res.deformation_at_ds_start * 1e3).c_str(),
+              exact_text(res.dynamic_stability).c_str(), curve.c_str());
+  INFO("rut " << exact_text(res.deformation_final * 1e3) << " mm against the pin's " << exact_text(pin.rut_mm));
+  CHECK(same_bits(res.deformation_final * 1e3, pin.rut_mm));
+  CHECK(same_bits(res.deformation_at_ds_start * 1e3, pin.at_ds_start_mm));
+  CHECK(same_bits(res.dynamic_stability, pin.ds));
+  for (const auto& [k, mm] : pin.curve_mm) {
+    INFO("sample " << k << " of " << res.samples.size());
+    REQUIRE(k < res.samples.size());
+    INFO("deformation " << exact_text(res.samples[k].deformation * 1e3) << " mm against the pin's " << exact_text(mm));
+    CHECK(same_bits(res.samples[k].deformation * 1e3, mm));
+  }
 }
 
 }  // namespace vrut_test

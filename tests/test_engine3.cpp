@@ -3,6 +3,7 @@
 // sphere sliding on a plate until it rolls, and a pair that touches across
 // a periodic face.
 #include "contact_timing.hpp"
+#include "openmp_threads.hpp"
 #include "pile3.hpp"
 #include "spaces.hpp"
 
@@ -293,6 +294,7 @@ std::vector<double> drop_pile(int steps) {
 // The pile (pile3.hpp) has settled into contact with the floor and across
 // the faces by then (checked, so that the comparison covers those paths).
 TEST_CASE("3D: Serial and OpenMP give the same bits on a settling pile", "[engine3][backends]") {
+  if (!vrut_test::openmp_runs_several_threads()) return;
   const int steps = 3000;
   const std::vector<double> serial = drop_pile<Kokkos::Serial>(steps);
   const std::vector<double> openmp = drop_pile<Kokkos::OpenMP>(steps);

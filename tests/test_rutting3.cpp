@@ -1,11 +1,117 @@
-// The 3D rutting run's own checks (rutting/run3.hpp).
+// The 3D rutting run's own checks (rutting/run3.hpp): a small box of 2#
+// pinned, an ensemble equal to its single runs, Serial = OpenMP, and a
+// sphere outside its mould.
+#include "openmp_threads.hpp"
+#include "rutting_checks.hpp"
 #include "small_box3.hpp"
 
 #include <vrut/rutting/run3.hpp>
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <vector>
+
+namespace {
+
+// A small box of 2#: 40 mm wide (the plate is 21.86 mm long), 50 mm high,
+// 40 mm deep (periodic), of 1.5 mm spheres: about 4,000 spheres.
+vrut::Specimen3 small_box_of_2(std::uint64_t seed) {
+  vrut::SpecimenSettings3 s = vrut_test::small_box3(2, seed, 40.0);
+  s.sphere_radius = 1.5;
+  return vrut::generate_specimen3(s);
+}
+
+// The 3D model's defaults (vrut-rutting --dim 3): the mastic-aggregate
+// factor is the source's 1 in 3D, not the 2D calibration's 4.
+vrut::RuttingMaterials materials3() {
+  vrut::RuttingMaterials m;
+  m.mastic_aggregate_factor = 1.0;
+  return m;
+}
+
+// alpha_T 1e5 and 300 settling steps, as the command-line checks run 3D:
+// a tenth of the default's loading steps, some 1,700 of them. At that shift
+// the plate's inertia is no longer negligible (test_rutting.cpp's shift
+// test): the plate sinks some 11 mm in the first 30 minutes and comes to
+// rest on the skeleton, so this run pins the numerics, not the model's curve.
+vrut::RuttingNumerics numerics3() {
+  vrut::RuttingNumerics n;
+  n.shift = 1e5;
+  n.settle_steps = 300;
+  return n;
+}
+
+template <class Space>
+vrut::RuttingResult3 run_small_box(const vrut::Specimen3& specimen) {
+  return vrut::run_rutting3<Space>(specimen, vrut::WheelTracking{}, materials3(), numerics3());
+}
+
+// Every number of two 3D runs the same bits: the 2D result's (curve,
+// scalars, groups), and each sphere's final place and displacement.
+void require_same3(const vrut::RuttingResult3& a, const vrut::RuttingResult3& b) {
+  vrut_test::require_same(a.result, b.result);
+  REQUIRE(a.final_positions == b.final_positions);
+  REQUIRE(a.displacement == b.displacement);
+  REQUIRE(a.depth == b.depth);
+}
+
+}  // namespace
+
+// A regression pin (rutting_checks.hpp says when it may change) of the
+// whole 3D run: placement, FCC spheres, film per contact, rigid stones,
+// settling, the dead-load plate. Pinned 2026-12-04 (issue 41), before the 3D
+// time step and force pass change.
+TEST_CASE("3D: a small box of 2# gives the numbers pinned for it", "[rutting3][pinned]") {
+  const vrut::RuttingResult3 run = run_small_box<Kokkos::DefaultHostExecutionSpace>(small_box_of_2(1));
+  const vrut::RuttingResult& res = run.result;
+  INFO(res.particles << " spheres, " << res.steps << " steps, dt " << res.dt << " s");
+  REQUIRE(res.samples.size() == 240);
+  CHECK(res.samples.back().minutes == Approx(60.0).epsilon(1e-3));
+  CHECK(res.deformation_final > 1e-3);  // the plate went down
+  CHECK(std::isfinite(res.dynamic_stability));
+  CHECK(res.stone_pairs_touching > 0);
+  vrut_test::check_pinned(res, {12.00453270776209,
+                                12.026989440442804,
+                                3623.2063164299452,
+                                {{4, 0.017336428056964615},
+                                 {19, 1.1677229732157401},
+                                 {59, 5.4983420703650854},
+                                 {119, 10.931943000362807},
+                                 {179, 12.026809487404249}}});
+}
+
+// Two seeds side by side in one Simulation give each seed's single run, bit
+// for bit: nothing of one specimen reaches the other, and the shared time
+// step is each one's own (the same box and sphere size).
+TEST_CASE("3D: an ensemble of two seeds gives the two single runs, bit for bit", "[rutting3][ensemble]") {
+  using Space = Kokkos::DefaultHostExecutionSpace;
+  const std::vector<vrut::Specimen3> both{small_box_of_2(1), small_box_of_2(2)};
+  const auto ensemble = vrut::run_rutting_ensemble3<Space>(both, vrut::WheelTracking{}, materials3(), numerics3());
+  REQUIRE(ensemble.size() == 2);
+  for (std::size_t e = 0; e < both.size(); ++e) {
+    INFO("seed " << e + 1);
+    const vrut::RuttingResult3 alone = run_small_box<Space>(both[e]);
+    REQUIRE(alone.result.dt == ensemble[e].result.dt);  // else the comparison below means nothing
+    require_same3(ensemble[e], alone);
+  }
+  CHECK(ensemble[0].result.deformation_final != ensemble[1].result.deformation_final);  // two specimens
+}
+
+#if defined(KOKKOS_ENABLE_SERIAL) && defined(KOKKOS_ENABLE_OPENMP)
+// Every sum in a fixed order: the 3D run gives the same bits on one thread
+// and on several.
+TEST_CASE("3D: Serial and OpenMP give the same rutting run, bit for bit", "[rutting3][backends]") {
+  if (!vrut_test::openmp_runs_several_threads()) return;
+  const vrut::Specimen3 specimen = small_box_of_2(1);
+  const vrut::RuttingResult3 serial = run_small_box<Kokkos::Serial>(specimen);
+  const vrut::RuttingResult3 openmp = run_small_box<Kokkos::OpenMP>(specimen);
+  CHECK(openmp.result.deformation_final > 0.5e-3);  // the plate went down
+  require_same3(serial, openmp);
+}
+#endif
 
 // As in 2D ("a disk outside its mould stops the run, saying where"): a
 // sphere that leaves its mould through a wall, or far over the top, stops
