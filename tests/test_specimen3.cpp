@@ -2,6 +2,7 @@
 // convex hulls against solids worked by hand, the overlap test against an
 // independent one, and placed stones that share no point.
 #include "band_checks.hpp"
+#include "separating_axes.hpp"
 #include "small_box3.hpp"
 
 #include <vrut/io/stones3_state.hpp>
@@ -32,20 +33,22 @@ int stones_holding(const vrut::Placement3& p, const Point3& x) {
   return n;
 }
 
-// Points at random in the box: none in two stones, and the share in one
-// equal to the stones' volume fraction within four standard errors (a check
-// on the volumes that does not use them).
+// No two stones share a point, across the periodic depth too, decided
+// exactly for every pair (separating_axes.hpp, not the library's test); and
+// points at random in the box fall in a stone as often as the stones' volume
+// fraction says, within four standard errors (a check on the volumes that
+// does not use them).
 void check_points_in_stones(const vrut::Placement3& p, const vrut::PlacementSettings3& ps, std::mt19937_64& rng) {
+  const vrut_test::OverlapCount overlaps = vrut_test::overlapping_pairs(p);
+  INFO(overlaps.pairs_near << " pairs of stones near each other; " << overlaps.overlapping
+                           << " overlap, the deepest by " << overlaps.deepest << " mm");
+  CHECK(overlaps.pairs_near > 0);
+  CHECK(overlaps.overlapping == 0);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const int n = 20000;
-  int in = 0, twice = 0;
-  for (int i = 0; i < n; ++i) {
-    const int h = stones_holding(p, Point3(ps.width * u(rng), ps.height * u(rng), ps.depth * u(rng)));
-    in += h > 0;
-    twice += h > 1;
-  }
+  int in = 0;
+  for (int i = 0; i < n; ++i) in += stones_holding(p, Point3(ps.width * u(rng), ps.height * u(rng), ps.depth * u(rng))) > 0;
   const double f = p.achieved_fraction, se = std::sqrt(f * (1.0 - f) / n);
-  CHECK(twice == 0);
   CHECK(std::abs(static_cast<double>(in) / n - f) < 4.0 * se);
 }
 
@@ -140,7 +143,9 @@ TEST_CASE("3D stones: a random stone's volume against Monte Carlo, and its shape
 // Against an independent test on the same stones: a face plane of either
 // that has the whole other stone beyond it separates them (no overlap); a
 // point inside both proves an overlap. Pairs that neither decides (those
-// parted only across edges) are left out.
+// parted only across edges) are left out. The exact separating-axis test
+// that the placement checks use (separating_axes.hpp) must agree with both,
+// and with the library's test on every pair not within rounding of touching.
 TEST_CASE("3D stones: the overlap test agrees with separating planes and shared points", "[specimen3][unit]") {
   std::mt19937_64 rng(9);
   vrut::StoneShape3 shape;
@@ -166,12 +171,18 @@ TEST_CASE("3D stones: the overlap test agrees with separating planes and shared 
     }
     const bool found = vrut::stones_overlap(a, b, shift);
     CHECK(found == vrut::stones_overlap(a, moved));  // the shift is the same as a move
+    // The exact test that the placements' checks use (separating_axes.hpp)
+    // agrees, wherever the pair is not within rounding of touching.
+    const double apart_by = vrut_test::separation(a, moved);
+    if (std::abs(apart_by) > 1e-9) CHECK(found == (apart_by < 0.0));
     if (separates(a, moved) || separates(moved, a)) {
       ++apart;
       CHECK_FALSE(found);
+      CHECK(apart_by >= 0.0);
     } else if (shared) {
       ++overlapping;
       CHECK(found);
+      CHECK(apart_by < 0.0);
     }
   }
   CHECK(apart > 50);
