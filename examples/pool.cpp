@@ -2,12 +2,13 @@
 // of vrut-rutting (seeds 1-3 one day, 4-5 the next), from their seeds.csv
 // files: what one ensemble of them all reports, as far as the specimens'
 // rows carry it. The rut depth's mean, 95 % interval (Student t) and sd; the
-// DS's mean with its interval, and median; the DS as the standard reports
-// it: the median (Kaplan-Meier over the capped values) with its interval,
-// and the DS of the mean curve with its interval (from the specimens'
-// deformation over the DS window). Not without the curves: whether the mean
-// curve scatters more over the window than it deforms, where an ensemble
-// would call its DS a lower bound.
+// DS's mean, its geometric mean with that one's interval (Student t in the
+// logarithms, so it stays positive, as vrut-rutting prints it), and median;
+// the DS as the standard reports it: the median (Kaplan-Meier over the
+// capped values) with its interval, and the DS of the mean curve with its
+// interval (from the specimens' deformation over the DS window). Not without
+// the curves: whether the mean curve scatters more over the window than it
+// deforms, where an ensemble would call its DS a lower bound.
 //
 //   vrut-pool out/a/seeds.csv out/b/seeds.csv ...
 //   vrut-pool --cells ...   # "mean (low to high) | DS median | mean", for benchmarks/gradation_study.sh
@@ -85,9 +86,10 @@ int main(int argc, char** argv) {
     }
     std::printf("specimens: %d (seeds%s)\n", r.n, seeds.c_str());
     std::printf("rut depth, mm: %.2f (95 %% interval %.2f to %.2f), sd %.2f\n", r.mean, r.ci_low, r.ci_high, r.sd);
+    const vrut::GeometricStatistics g = vrut::describe_geometric(ds);
     if (bounds == 0)
-      std::printf("DS, passes/mm: mean %.0f (95 %% interval %.0f to %.0f), median %.0f\n", d.mean, d.ci_low, d.ci_high,
-                  d.median);
+      std::printf("DS, passes/mm: mean %.0f, geometric mean %.0f (95 %% interval %.0f to %.0f), median %.0f\n", d.mean,
+                  g.mean, g.ci_low, g.ci_high, d.median);
     else
       std::printf("DS, passes/mm: mean above %.0f (interval not known: %d of %d are lower bounds), median %s%.0f\n",
                   d.mean, bounds, r.n, median_above, d.median);

@@ -28,15 +28,19 @@ row() {
 { echo "seed,rut"; echo "1,2"; } >"$work/foreign.csv"
 
 # Ruts 11, 12, 13 mm: mean 12, sd 1, half width t(0.975, 2) / sqrt(3) =
-# 4.303 / 1.732 = 2.484. DS 100, 200, 600: mean 300, sd sqrt(140000 / 2) =
-# 264.6, half width 4.303 x 264.6 / 1.732 = 657.3; median 200. The mean
+# 4.303 / 1.732 = 2.484. DS 100, 200, 600: mean 300 (its Student-t interval,
+# -357 to 957, would reach below zero); the interval is the geometric mean's:
+# ln DS 4.6052, 5.2983, 6.3969, mean 5.4335, so (100 x 200 x 600)^(1/3) =
+# 228.9; sd sqrt((0.8283^2 + 0.1352^2 + 0.9635^2) / 2) = 0.9035, half width
+# 4.303 x 0.9035 / 1.732 = 2.2444: exp(3.1891) = 24.3 to exp(7.6779) =
+# 2160.0; median 200. The mean
 # curve: the windows' mean 3.5 mm, so 630 / 3.5 = 180 passes/mm; their sd
 # sqrt((2.8^2 + 0.35^2 + 2.45^2) / 2) = 2.642, half width 4.303 x 2.642 /
 # 1.732 = 6.564: from 630 / (3.5 + 6.564) = 63 to above the cap (the
 # interval reaches zero deformation). A median interval needs 6 specimens.
 want="specimens: 3 (seeds 1 2 3)
 rut depth, mm: 12.00 (95 % interval 9.52 to 14.48), sd 1.00
-DS, passes/mm: mean 300 (95 % interval -357 to 957), median 200
+DS, passes/mm: mean 300, geometric mean 229 (95 % interval 24 to 2160), median 200
 DS as the standard reports it (capped at 6000), passes/mm: median 200 (no interval below 6 specimens), of the mean curve 180 (95 % interval 63 to > 6000)"
 # With seed 2's DS only a lower bound (200, censored): the mean and the
 # median are lower bounds; the standard's Kaplan-Meier median: the survival
@@ -76,8 +80,11 @@ if [ -n "$rutting" ]; then
   # median, and the standard's mean curve with its interval, in vrut-pool's words.
   want_pooled=$(sed -E 's/.*rut depth ([0-9.]+) mm at [0-9]+ min \(sd ([0-9.]+), 95 % CI ([-0-9.]+) to ([-0-9.]+)\).*, median ([0-9]+), of the mean curve.*of the mean curve ([0-9]+) \(95 % interval ([0-9]+) to ([>0-9 ]+)\) passes.*/\1 (95 % interval \3 to \4), sd \2|median \5|of the mean curve \6 (95 % interval \7 to \8)/' <<<"$printed")
   IFS='|' read -r rut median curve <<<"$want_pooled"
+  # Where no DS is a lower bound, the DS's geometric mean and its interval too.
+  geometric=$(grep -oE "geometric mean [0-9]+ \(95 % CI [0-9]+ to [0-9]+\)" <<<"$printed" | sed 's/CI/interval/')
+  if grep -qF "mean above" <<<"$printed" || [ -n "$geometric" ]; then geometric_ok=1; else geometric_ok=0; fi
   if [ -n "$printed" ] && grep -qF "rut depth, mm: $rut" <<<"$pooled" && grep -qF "), $median" <<<"$pooled" &&
-     grep -qF "$curve" <<<"$pooled"; then
+     grep -qF "$curve" <<<"$pooled" && [ "$geometric_ok" -eq 1 ] && grep -qF "$geometric" <<<"$pooled"; then
     echo "ok:   an ensemble's seeds.csv pools to the statistics it printed"
   else
     echo "FAIL: pooled a vrut-rutting ensemble; it printed:"; echo "$printed"; echo "pooled:"; echo "$pooled"

@@ -31,6 +31,32 @@ TEST_CASE("ensemble statistics match hand-worked values", "[analysis][unit]") {
   CHECK_THROWS(vrut::describe({}));
 }
 
+// The DS's interval: the geometric mean's, from the logarithms. 1, 10, 100:
+// ln 10 x (0, 1, 2), mean ln 10, sd ln 10, so the geometric mean is 10 and
+// its interval 10^(1 -+ 4.3027 / sqrt(3)) = 0.0328 to 3049. DS 100, 200,
+// 600 (tests/pool.sh): the arithmetic mean's interval reaches below zero
+// (300 -+ 657), the geometric mean's is 24.27 to 2160.
+TEST_CASE("a positive quantity's geometric mean has an interval that stays positive", "[analysis][unit]") {
+  const auto g = vrut::describe_geometric({100.0, 1.0, 10.0});
+  CHECK(g.n == 3);
+  CHECK(g.mean == Approx(10.0));
+  CHECK(g.ci_low == Approx(std::pow(10.0, 1.0 - 4.3027 / std::sqrt(3.0))).epsilon(1e-4));
+  CHECK(g.ci_high == Approx(std::pow(10.0, 1.0 + 4.3027 / std::sqrt(3.0))).epsilon(1e-4));
+  const std::vector<double> ds{100.0, 200.0, 600.0};
+  CHECK(vrut::describe(ds).ci_low < 0.0);
+  const auto spread = vrut::describe_geometric(ds);
+  CHECK(spread.mean == Approx(std::cbrt(100.0 * 200.0 * 600.0)));
+  CHECK(spread.ci_low == Approx(24.27).epsilon(1e-3));
+  CHECK(spread.ci_high == Approx(2160.0).epsilon(1e-3));
+  // One value: no interval; a value not positive (or a run stopped early): no geometric mean.
+  const auto one = vrut::describe_geometric({7.0});
+  CHECK(one.mean == Approx(7.0));
+  CHECK(std::isnan(one.ci_low));
+  CHECK(std::isnan(vrut::describe_geometric({5.0, 0.0}).mean));
+  CHECK(std::isnan(vrut::describe_geometric({5.0, std::nan("")}).mean));
+  CHECK_THROWS(vrut::describe_geometric({}));
+}
+
 TEST_CASE("the ensemble's mean curve and its DS", "[analysis][unit]") {
   // Two curves sampled at 0, 45 and 60 min: 0 / 4 / 5 mm and 0 / 6 / 9 mm.
   // Mean curve 0 / 5 / 7 mm: DS = 15 min * 42 / 2 mm = 315 passes/mm, while
@@ -50,6 +76,8 @@ TEST_CASE("the ensemble's mean curve and its DS", "[analysis][unit]") {
   const auto summary = vrut::summarize_rutting({run(4.0, 5.0), run(6.0, 9.0)}, vrut::WheelTracking{});
   CHECK(summary.mean_curve.dynamic_stability == Approx(315.0));
   CHECK(summary.dynamic_stability.mean == Approx(0.5 * (630.0 + 210.0)));
+  CHECK(summary.dynamic_stability_geometric.mean == Approx(std::sqrt(630.0 * 210.0)));
+  CHECK(summary.dynamic_stability_geometric.ci_low > 0.0);
   CHECK(summary.rut_depth.mean == Approx(7.0));
   CHECK(summary.deformation_at_ds_start.mean == Approx(5.0));
   CHECK(summary.deformation_sd[2] == Approx(std::sqrt(8.0) * 1e-3));

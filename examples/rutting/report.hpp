@@ -240,13 +240,19 @@ void print_result(const std::string& what_was_run, const std::vector<vrut::Rutti
     const bool spread = r.n > 1;
     char rut_spread[96] = "one specimen, no interval";
     if (spread) std::snprintf(rut_spread, sizeof rut_spread, "sd %.2f, 95 %% CI %.2f to %.2f", r.sd, r.ci_low, r.ci_high);
-    const std::string ds_interval = !spread ? "no interval"
-                                    : any_bound ? "95 % CI not known"
-                                                : "95 % CI " + ds_text(d.ci_low, false) + " to " + ds_text(d.ci_high, false);
+    // The DS is positive and spreads by factors: its interval is the
+    // geometric mean's, taken in the logarithms (analysis/statistics.hpp),
+    // which stays above zero where the arithmetic mean's need not.
+    const auto& g = summary.dynamic_stability_geometric;
+    const std::string ds_mean =
+        !spread     ? ds_text(d.mean, any_bound) + " (no interval)"
+        : any_bound ? ds_text(d.mean, true) + " (95 % CI not known)"
+                    : ds_text(d.mean, false) + ", geometric mean " + ds_text(g.mean, false) + " (95 % CI " +
+                          ds_text(g.ci_low, false) + " to " + ds_text(g.ci_high, false) + ")";
     std::printf("%s, %s: rut depth %.2f mm at %.0f min (%s), "
-                "dynamic stability: mean %s (%s), median %s, of the mean curve %s passes/mm",
+                "dynamic stability: mean %s, median %s, of the mean curve %s passes/mm",
                 what_was_run.c_str(), cli::specimens_text(r.n).c_str(), r.mean, wt.minutes, rut_spread,
-                ds_text(d.mean, any_bound).c_str(), ds_interval.c_str(),
+                ds_mean.c_str(),
                 ds_text(d.median, summary.dynamic_stability_median_is_lower_bound).c_str(),
                 ds_text(summary.mean_curve.dynamic_stability, summary.mean_curve.dynamic_stability_is_lower_bound).c_str());
     if (any_bound)

@@ -16,6 +16,9 @@ namespace vrut {
 
 struct RuttingEnsembleSummary {
   SampleStatistics rut_depth, deformation_at_ds_start, deformation_final, dynamic_stability;  // mm, passes/mm
+  // The DS's geometric mean and its interval, which stays positive where the
+  // arithmetic mean's Student-t interval can reach below zero.
+  GeometricStatistics dynamic_stability_geometric;
   RuttingResult mean_curve;  // samples: mean deformation and pressure; its DS from that curve
   std::vector<double> deformation_sd;  // m, standard deviation at each sample (0 for one specimen)
   std::vector<double> deformation_ci_low, deformation_ci_high;  // m, of the mean at each sample
@@ -56,6 +59,7 @@ inline RuttingEnsembleSummary summarize_rutting(const std::vector<RuttingResult>
   out.deformation_at_ds_start = describe(d45, confidence);
   out.deformation_final = describe(d60, confidence);
   out.dynamic_stability = describe(ds, confidence);
+  out.dynamic_stability_geometric = describe_geometric(ds, confidence);
   std::vector<std::pair<double, bool>> values;
   for (const auto& r : runs) {
     values.emplace_back(r.dynamic_stability, r.dynamic_stability_is_lower_bound);
