@@ -74,7 +74,8 @@ int main(int argc, char** argv) {
     vrut::OutputDir dir(out, force);
     vrut::KokkosSession kokkos(threads);
     int used_threads = 1;
-    vrut::ProgressBar bar("creep", 1000, "permille");
+    // Reported in permille of the test; read as seconds of the (real) loading a second.
+    vrut::ProgressBar bar("creep", 1000, {"test s", cs.duration / 1000.0});
     const vrut::CreepResult res = vrut::dispatch_backend(backend, [&](auto space) {
       used_threads = vrut::concurrency(space);
       return vrut::run_creep(cs, space, [&](long done, long total) { bar.update(done * 1000 / total); });

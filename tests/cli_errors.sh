@@ -88,6 +88,9 @@ creep)
     [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
   done
   expect "0" "apparent/macro" -- --out taken --force --stress-mpa 0.01 --time-s 20 --columns 6 --rows 4
+  # The progress bar's rate in seconds of the test's loading a second.
+  expect "0" "creep \[#+\] 100%  [0-9.e+-]+ test s/s  ETA" -- --out progress --stress-mpa 0.01 --time-s 20 \
+    --columns 6 --rows 4
   for f in creep.csv creep.json creep.png; do
     [[ -s "$work/taken/$f" ]] || { echo "FAIL: no $f"; failures=$((failures + 1)); }
   done
@@ -138,7 +141,7 @@ specimen)
   expect "2" "threads is for 3D" -- --threads 2 --out o2
   expect "1 2" "threads" -- --dim 3 --threads -1 --out o3
   expect "1 2" "stone-packing" -- --dim 3 --stone-packing sideways --out p
-  for d in k l m n o p; do
+  for d in k l m n o o2 o3 p; do
     [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
   done
   if [[ -n ${VRUT_SANITIZED:-} ]]; then
@@ -239,8 +242,9 @@ rutting)
     grep -q "\"$key\"" "$work/run1/summary.json" || { echo "FAIL: summary.json lacks $key"; failures=$((failures + 1)); }
   done
   expect "1 2" "exists" -- "${small[@]}" --out run1
-  # The config written is the config used: reading it back gives the same result.
-  expect "0" "rut depth" -- --config run1/config.ini --out run2
+  # The config written is the config used: reading it back gives the same
+  # result. (Its progress bar's rate: minutes of the test a second.)
+  expect "0" "loading \[#+\] 100%  [0-9.e+-]+ test min/s  ETA" -- --config run1/config.ini --out run2
   cmp -s "$work/run1/deformation.csv" "$work/run2/deformation.csv" ||
     { echo "FAIL: the written config.ini does not reproduce the run"; failures=$((failures + 1)); }
   # The options of the study and the calibrated conversion run end to end, and

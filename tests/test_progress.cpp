@@ -11,8 +11,9 @@
 TEST_CASE("the progress bar writes a slow rate with its digits and a long ETA in minutes and hours",
           "[progress][unit]") {
   using vrut::ProgressBar;
-  // A five-specimen 3D run advances about a quarter permille a second.
+  // A five-specimen 3D run advances about a hundredth of a test minute a second.
   CHECK(ProgressBar::rate_text(0.2417) == "0.24");
+  CHECK(ProgressBar::rate_text(0.0152) == "0.015");
   CHECK(ProgressBar::rate_text(0.0) == "0");
   CHECK(ProgressBar::rate_text(41.53) == "41.5");
   CHECK(ProgressBar::rate_text(8823.4) == "8823");
@@ -20,11 +21,12 @@ TEST_CASE("the progress bar writes a slow rate with its digits and a long ETA in
   CHECK(ProgressBar::duration_text(3277.0) == "55 min");    // 54.6 min
   CHECK(ProgressBar::duration_text(7500.0) == "2 h 05 min");  // 2 h 5 min 0 s
   CHECK(ProgressBar::duration_text(9017.0) == "2 h 30 min");  // 2 h 30 min 17 s
-  // Written to a file, a bar prints a line every 10 %, with both.
+  // Written to a file, a bar prints a line every 10 %, with both, its rate
+  // in the unit a person reads (a rutting run: minutes of the test).
   std::FILE* f = std::tmpfile();
   REQUIRE(f != nullptr);
   {
-    ProgressBar bar("loading", 1000, "permille", f);
+    ProgressBar bar("loading", 1000, {"test min", 60.0 / 1000}, f);
     bar.update(150);
   }
   std::rewind(f);
@@ -34,20 +36,20 @@ TEST_CASE("the progress bar writes a slow rate with its digits and a long ETA in
   const std::string text = line;
   CHECK(text.rfind("loading [####", 0) == 0);
   CHECK(text.find(" 15%") != std::string::npos);
-  CHECK(text.find(" permille/s  ETA ") != std::string::npos);
+  CHECK(text.find(" test min/s  ETA ") != std::string::npos);
 }
 
 // A run resumed at 49 % (its first report) that then does 10 permille in
-// 10 s goes at 1 permille a second: 500 permille left is 500 s, "8 min". A
-// rate from the bar's start would count the 490 permille done before the
-// resume as done in no time (the ETA of "15 s" a resumed 45-minute run
-// showed).
+// 10 s goes at 1 permille a second, of a 60-minute test 0.06 test minutes a
+// second: 500 permille left is 500 s, "8 min". A rate from the bar's start
+// would count the 490 permille done before the resume as done in no time
+// (the ETA of "15 s" a resumed 45-minute run showed).
 TEST_CASE("a resumed run's rate and ETA count from its first report", "[progress][unit]") {
   using vrut::ProgressBar;
   std::FILE* f = std::tmpfile();
   REQUIRE(f != nullptr);
   {
-    ProgressBar bar("loading", 1000, "permille", f);
+    ProgressBar bar("loading", 1000, {"test min", 60.0 / 1000}, f);
     const auto t0 = ProgressBar::clock::now() + std::chrono::seconds(5);
     bar.update(490, t0);  // the first report: no rate yet
     bar.update(500, t0 + std::chrono::seconds(10));
@@ -57,6 +59,24 @@ TEST_CASE("a resumed run's rate and ETA count from its first report", "[progress
   REQUIRE(std::fgets(first, sizeof first, f) != nullptr);
   REQUIRE(std::fgets(second, sizeof second, f) != nullptr);
   std::fclose(f);
-  CHECK(std::string(first).find(" 49%  - permille/s  ETA -") != std::string::npos);
-  CHECK(std::string(second).find(" 50%  1.0 permille/s  ETA 8 min") != std::string::npos);
+  CHECK(std::string(first).find(" 49%  - test min/s  ETA -") != std::string::npos);
+  CHECK(std::string(second).find(" 50%  0.06 test min/s  ETA 8 min") != std::string::npos);
+}
+
+// Steps, the default unit, count one a report.
+TEST_CASE("a bar in steps gives steps a second", "[progress][unit]") {
+  using vrut::ProgressBar;
+  std::FILE* f = std::tmpfile();
+  REQUIRE(f != nullptr);
+  {
+    ProgressBar bar("compressing", 5000, {}, f);
+    const auto t0 = ProgressBar::clock::now();
+    bar.update(0, t0);
+    bar.update(1000, t0 + std::chrono::seconds(4));
+  }
+  std::rewind(f);
+  char line[200] = {};
+  REQUIRE(std::fgets(line, sizeof line, f) != nullptr);
+  std::fclose(f);
+  CHECK(std::string(line).find(" 20%  250 steps/s  ETA 16 s") != std::string::npos);
 }

@@ -180,8 +180,9 @@ int main(int argc, char** argv) {
       output->require_space(4'000'000 + 200 * sp.disks.centers.size() + 2 * 1'200 * my_disks * session.size());
     vrut::KokkosSession kokkos(o.threads);
     int used_threads = 1;
+    // Reported in permille of the test; read as minutes of the test a second.
     vrut::ProgressBar bar(ensemble ? "loading " + cli::specimens_text(seeds.size()) : "loading", 1000,
-                          "permille", session.root() ? stderr : nullptr);
+                          {"test min", wt.minutes / 1000.0}, session.root() ? stderr : nullptr);
     std::optional<CatchStopSignals> catching(std::in_place);
     if (checkpoint->resuming()) std::fprintf(stderr, "resuming from %s\n", checkpoint->path().c_str());
     std::vector<vrut::RuttingResult> runs;

@@ -156,8 +156,9 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
                ensemble ? " in all" : "", sp.placement.stones.size(), ensemble ? " in the first" : "",
                wt.contact_length() * 1e3, sp.depth, wt.loading_time(), wt.loading_time() / num.shift);
   int used_threads = 1;
+  // Reported in permille of the test; read as minutes of the test a second.
   vrut::ProgressBar bar(ensemble ? "loading " + cli::specimens_text(seeds.size()) : "loading", 1000,
-                        "permille");
+                        {"test min", wt.minutes / 1000.0});
   if (checkpoint.resuming()) std::fprintf(stderr, "resuming from %s\n", checkpoint.path().c_str());
   std::vector<vrut::RuttingResult3> runs3;
   {

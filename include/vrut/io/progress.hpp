@@ -8,16 +8,31 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
+
 #include <unistd.h>
 
 namespace vrut {
+
+// What the bar's rate counts, as a person reads it: `name` a second, each
+// count reported being `per_count` of them. A rutting run reports permille
+// of its test; {"test min", 60.0 / 1000} turns that into minutes of the test
+// a second ("0.25 test min/s"), where "permille/s" said nothing one knows.
+struct RateUnit {
+  std::string name = "steps";
+  double per_count = 1.0;
+  RateUnit() = default;
+  RateUnit(std::string unit_name, double amount_per_count = 1.0)
+      : name(std::move(unit_name)), per_count(amount_per_count) {}
+  RateUnit(const char* unit_name, double amount_per_count = 1.0) : RateUnit(std::string(unit_name), amount_per_count) {}
+};
 
 class ProgressBar {
  public:
   using clock = std::chrono::steady_clock;
 
   // out == nullptr: a silent bar (the other ranks of an MPI run, say).
-  ProgressBar(std::string label, long total, std::string unit = "steps", std::FILE* out = stderr)
+  ProgressBar(std::string label, long total, RateUnit unit = {}, std::FILE* out = stderr)
       : label_(std::move(label)), unit_(std::move(unit)), total_(total > 0 ? total : 1), out_(out),
         tty_(out != nullptr && isatty(fileno(out)) != 0), start_(clock::now()), last_draw_(start_) {}
 
@@ -49,7 +64,7 @@ class ProgressBar {
   double elapsed_seconds() const { return std::chrono::duration<double>(clock::now() - start_).count(); }
 
   // A rate with the digits it needs: 8823, 41.5, 0.24 (a long run's
-  // permille a second would otherwise read 0).
+  // minutes of the test a second would otherwise read 0).
   static std::string rate_text(double rate) {
     char text[40];
     std::snprintf(text, sizeof text, rate >= 100.0 ? "%.0f" : rate >= 1.0 ? "%.1f" : "%.2g", rate);
@@ -72,18 +87,19 @@ class ProgressBar {
   void draw(long done, clock::time_point now) {
     const double seconds = std::chrono::duration<double>(now - first_report_).count();
     const bool measured = seconds > 0.0 && done > first_done_;  // else no rate yet: "-"
-    const double rate = measured ? (done - first_done_) / seconds : 0.0;
+    const double rate = measured ? (done - first_done_) / seconds : 0.0;  // counts a second
     const std::string eta = done >= total_ ? "0 s" : measured ? duration_text((total_ - done) / rate) : "-";
     const int width = 30, filled = static_cast<int>(width * static_cast<double>(done) / total_);
     std::string bar(filled, '#');
     bar.resize(width, '.');
     std::fprintf(out_, "%s%s [%s] %3d%%  %s %s/s  ETA %s%s", tty_ ? "\r" : "", label_.c_str(), bar.c_str(),
-                 static_cast<int>(100.0 * done / total_), measured ? rate_text(rate).c_str() : "-", unit_.c_str(),
-                 eta.c_str(), tty_ ? "   " : "\n");
+                 static_cast<int>(100.0 * done / total_), measured ? rate_text(rate * unit_.per_count).c_str() : "-",
+                 unit_.name.c_str(), eta.c_str(), tty_ ? "   " : "\n");
     std::fflush(out_);
   }
 
-  std::string label_, unit_;
+  std::string label_;
+  RateUnit unit_;
   long total_;
   std::FILE* out_;
   bool tty_;
