@@ -34,6 +34,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <random>
 #include <stdexcept>
@@ -80,6 +81,21 @@ namespace detail {
 
 inline const char* phase_name(ImagePhase p) {
   return p == ImagePhase::stone ? "stone" : p == ImagePhase::mastic ? "mastic" : "void";
+}
+
+// The phases' order as --phases takes it: "void,mastic,stone".
+inline std::string phases_text(const std::vector<ImagePhase>& order) {
+  std::string text;
+  for (ImagePhase p : order) text += (text.empty() ? "" : ",") + std::string(phase_name(p));
+  return text;
+}
+
+// A length as a person writes it, in its shortest form: 2.36, 0.1, 1 (not
+// std::to_string's 2.360000).
+inline std::string mm_text(double mm) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", mm);
+  return text;
 }
 
 // Otsu's criterion for three classes: the two thresholds t1 < t2 (class 0 is
@@ -317,8 +333,8 @@ inline SegmentedImage segment_image(const cv::Mat& image, const ImageSettings& s
   const double px = out.mm_per_pixel;
   if (!(s.disk_radius > 0.0)) throw std::invalid_argument("disk radius must be positive");
   if (s.disk_radius < px)
-    throw std::invalid_argument("a disk (radius " + std::to_string(s.disk_radius) + " mm) is smaller than a pixel (" +
-                                std::to_string(px) + " mm): is the scale right?");
+    throw std::invalid_argument("a disk (radius " + detail::mm_text(s.disk_radius) + " mm) is smaller than a pixel (" +
+                                detail::mm_text(px) + " mm): is the scale right?");
   cv::Mat stones(image.size(), CV_8U, cv::Scalar(0)), voids(image.size(), CV_8U, cv::Scalar(0));
   cv::Mat given_labels;  // a label image's stones
   if (s.label_image) {
@@ -442,10 +458,18 @@ inline SegmentedImage segment_image(const cv::Mat& image, const ImageSettings& s
   out.fraction[static_cast<int>(ImagePhase::air_void)] = cv::countNonZero(labels == -2) / total;
   out.fraction[static_cast<int>(ImagePhase::mastic)] = cv::countNonZero(labels == -1) / total;
   out.fraction[static_cast<int>(ImagePhase::stone)] = cv::countNonZero(labels >= 0) / total;
+  // No stone large enough: a wrong scale, or (from grey levels) phases in
+  // the wrong order, such as bright voids read as the stones under the
+  // default void,mastic,stone, where only small bright specks are found.
   if (count == 0)
-    throw std::invalid_argument("no stone of " + std::to_string(s.smallest_stone_mm) +
-                                " mm or more in the image (" + std::to_string(out.stones_dropped) +
-                                " smaller ones taken as mastic): is the scale right?");
+    throw std::invalid_argument(
+        "no stone of " + detail::mm_text(s.smallest_stone_mm) + " mm or more in the image (" +
+        std::to_string(out.stones_dropped) + " smaller ones taken as mastic): is the scale right (" +
+        detail::mm_text(px) + " mm per pixel)?" +
+        (s.label_image ? std::string()
+                       : " Are the phases from dark to bright " + detail::phases_text(s.order) +
+                             "? If not, give their order with --phases (bright voids: --phases mastic,stone,void, "
+                             "say)"));
   return out;
 }
 
