@@ -174,7 +174,12 @@ Placement place_aggregates(const Stereology& st, const PlacementSettings& ps, Rn
       const Point lo(-local.min().x(), -local.min().y());
       const Point span(ps.width - local.sizes().x(), ps.height - local.sizes().y());
       if (span.x() < 0.0 || span.y() < 0.0) return false;
-      c.translate(lo + Point(u(rng) * span.x(), u(rng) * span.y()));
+      // Drawn one by one, y first: a constructor's arguments are evaluated in
+      // no set order (gcc went right to left, clang left to right), so a
+      // seed gave another specimen under clang. Fixed in gcc's order, which
+      // every specimen and pin was made with.
+      const double draw_y = u(rng), draw_x = u(rng);
+      c.translate(lo + Point(draw_x * span.x(), draw_y * span.y()));
       if (fits(c, detail::bounds(c))) {
         a.polygon = std::move(c);
         return true;
@@ -196,7 +201,8 @@ Placement place_aggregates(const Stereology& st, const PlacementSettings& ps, Rn
       Polygon moved = b.polygon;
       moved.translate(-c);
       moved = detail::rotated(moved, reach * (2.0 * u(rng) - 1.0));
-      moved.translate(c + reach * b.diameter * Point(2.0 * u(rng) - 1.0, 2.0 * u(rng) - 1.0));
+      const double draw_y = u(rng), draw_x = u(rng);  // in this order: see random_tries
+      moved.translate(c + reach * b.diameter * Point(2.0 * draw_x - 1.0, 2.0 * draw_y - 1.0));
       const Eigen::AlignedBox2d box = detail::bounds(moved);
       if (!fits(moved, box, id)) continue;
       grid.remove(id, detail::bounds(b.polygon));

@@ -122,7 +122,12 @@ template <class Rng>
 Eigen::Matrix3d small_rotation(double angle, Rng& rng) {
   std::normal_distribution<double> g(0.0, 1.0);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const Point3 axis = Point3(g(rng), g(rng), g(rng)).normalized();
+  // Drawn one by one, z first: a constructor's arguments are evaluated in no
+  // set order (gcc went right to left, clang left to right), so a seed gave
+  // another specimen under clang. Fixed in gcc's order, which every specimen
+  // and pin was made with; the same below.
+  const double draw_z = g(rng), draw_y = g(rng), draw_x = g(rng);
+  const Point3 axis = Point3(draw_x, draw_y, draw_z).normalized();
   return Eigen::AngleAxisd(angle * u(rng), axis).toRotationMatrix();
 }
 
@@ -210,7 +215,8 @@ Placement3 place_stones3(const Stereology& st, const PlacementSettings3& ps, Rng
       Stone3 c = s.shape;
       double z = where.min().z() + u(rng) * where.sizes().z();
       z -= ps.depth * std::floor(z / ps.depth);
-      c.translate(Point3(x0 + u(rng) * (x1 - x0), y0 + u(rng) * (y1 - y0), z));
+      const double draw_y = u(rng), draw_x = u(rng);  // in this order: see small_rotation
+      c.translate(Point3(x0 + draw_x * (x1 - x0), y0 + draw_y * (y1 - y0), z));
       if (fits(c)) {
         s.shape = std::move(c);
         return true;
@@ -238,7 +244,8 @@ Placement3 place_stones3(const Stereology& st, const PlacementSettings3& ps, Rng
     for (int id : order) {
       PlacedStone3& b = out.stones[id];
       Stone3 moved = detail::turned(b.shape, detail::small_rotation(reach, rng));
-      moved.translate(reach * b.diameter * Point3(2.0 * u(rng) - 1.0, 2.0 * u(rng) - 1.0, 2.0 * u(rng) - 1.0));
+      const double draw_z = u(rng), draw_y = u(rng), draw_x = u(rng);  // in this order: see small_rotation
+      moved.translate(reach * b.diameter * Point3(2.0 * draw_x - 1.0, 2.0 * draw_y - 1.0, 2.0 * draw_z - 1.0));
       wrap(moved);
       if (!fits(moved, id)) continue;
       grid.remove(id, placed_bounds[id]);
@@ -257,7 +264,8 @@ Placement3 place_stones3(const Stereology& st, const PlacementSettings3& ps, Rng
     // Jammed: rounds of jiggling about a point drawn at random, each
     // followed by tries about that point (the stones there were moved).
     for (int round = 0; round < ps.jiggle_rounds && !placed; ++round) {
-      const Point3 at(u(rng) * ps.width, u(rng) * ps.height, u(rng) * ps.depth);
+      const double draw_z = u(rng), draw_y = u(rng), draw_x = u(rng);  // in this order: see small_rotation
+      const Point3 at(draw_x * ps.width, draw_y * ps.height, draw_z * ps.depth);
       const Point3 half = Point3::Constant(1.5 * s.diameter);
       const double kept = jiggle(reach, Eigen::AlignedBox3d(at - half, at + half));
       reach = std::clamp(reach * (kept > 0.35 ? 1.25 : 0.8), 1e-3, 0.5);
