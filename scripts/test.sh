@@ -16,5 +16,22 @@ cd "$build"
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2} OMP_PROC_BIND=${OMP_PROC_BIND:-false}
 # Side by side as each test's PROCESSORS allow (tests/CMakeLists.txt): on 2
 # cores, the single-threaded tests two at a time, the others alone.
+# ctest's own exit code is the script's; the skipped tests' reasons follow
+# its summary.
+code=0
 # shellcheck disable=SC2086
-ctest --output-on-failure --timeout 600 --parallel "$jobs" ${CTEST_ARGS:-}
+ctest --output-on-failure --timeout 600 --parallel "$jobs" ${CTEST_ARGS:-} | tee ctest.out || code=$?
+# ctest names the tests it skipped (SKIP_RETURN_CODE 77) but not why:
+# --output-on-failure shows no skip's output, and LastTest.log records a skip
+# as passed. Each skipping script says why on a line of its own, "SKIPPED:
+# ..." (tests/*.sh): that line, under each skipped test's name.
+skipped=$(sed -n 's/^[[:space:]]*[0-9][0-9]* - \(.*\) (Skipped)$/\1/p' ctest.out)
+if [[ -n $skipped ]]; then
+  echo "Why they were skipped:"
+  while read -r name; do
+    reason=$(awk -v name="$name" '/^[0-9]+\/[0-9]+ Testing: / { current = substr($0, index($0, ": ") + 2) }
+                                  current == name && /^SKIPPED: / { print; exit }' Testing/Temporary/LastTest.log)
+    echo "  $name: ${reason:-(no SKIPPED: line in its output; see Testing/Temporary/LastTest.log)}"
+  done <<<"$skipped"
+fi
+exit "$code"

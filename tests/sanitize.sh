@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# The unit tests and the bad-input tests once more, built with
+# The unit, physics and pinned tests and the bad-input tests once more, built with
 # AddressSanitizer and UndefinedBehaviorSanitizer: any report fails the test.
 # clang at -O0 compiles three times faster than at -O1, which keeps this
 # within the suite's time; the tests it runs are small. MPI is left out:
-# OpenMPI's own start-up allocations would read as leaks.
+# OpenMPI's own start-up allocations would read as leaks (said in the output;
+# this script runs no MPI test, and the MPI test of this build folder, were
+# one to run it, skips as "left out on purpose" rather than fail).
 # Skipped (77) without clang.
 #   Usage: sanitize.sh SOURCE_DIR BUILD_DIR KOKKOS_ROOT
 set -uo pipefail
@@ -14,6 +16,8 @@ cmake -S "$src" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DVRUT_BUILD_BENCHMARKS=OFF \
   -DCMAKE_DISABLE_FIND_PACKAGE_MPI=ON >"$build.configure.log" 2>&1 ||
   { cat "$build.configure.log"; echo "FAIL: configuring the sanitizer build"; exit 1; }
+echo "note: MPI left out of this build on purpose (CMAKE_DISABLE_FIND_PACKAGE_MPI=ON): vrut-rutting runs here as one"
+echo "      process; the two-rank test is examples.rutting_mpi_two_ranks, in the main build"
 exes=(vrut-tests-sanitize vrut-demo vrut-creep vrut-specimen vrut-rutting)
 cmake --build "$build" --target "${exes[@]}" 2>&1 | grep -E "error|\[[0-9]+/[0-9]+\]"
 [[ ${PIPESTATUS[0]} -eq 0 ]] || { echo "FAIL: the sanitizer build"; exit 1; }
@@ -30,7 +34,10 @@ log=$build/sanitize.log
 : >"$log"
 # One tag a run, each with --warn NoTests: a tag that matches nothing (a
 # renamed or misspelt one) fails instead of running nothing.
-for tag in "[unit]" "[input]" "[checkpoint]" "[instability]"; do
+# The pinned runs that are small enough here ([pinned][small]: the 2D
+# defaults' section, about a minute at -O0, and a short 3D run): the others
+# take 30 times their -O2 time under the sanitizers, many minutes each.
+for tag in "[unit]" "[input]" "[checkpoint]" "[instability]" "[physics]" "[pinned][small]"; do
   "$build/tests/vrut-tests-sanitize" --warn NoTests "$tag" >>"$log" 2>&1 ||
     { echo "FAIL: the $tag tests under the sanitizers (exit $?)"; failures=$((failures + 1)); }
 done

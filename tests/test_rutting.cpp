@@ -73,7 +73,7 @@ void check_sane_and_pinned(const vrut::RuttingMaterials& materials, const vrut_t
 // small section. Pinned 2026-12-02, when the film per contact with the
 // mastic-aggregate factor 4 became the default; the curve's points pinned
 // 2026-12-04 from the same run (its scalars unchanged, bit for bit).
-TEST_CASE("a small rutting test gives a sane deformation curve", "[rutting][pinned]") {
+TEST_CASE("a small rutting test gives a sane deformation curve", "[rutting][pinned][small]") {
   check_sane_and_pinned({},
                         {vrut_test::pinned_small_rut_mm, 6.8582358817027398, 1439.6110742382414,
                          {{4, 0.82720620103563303},

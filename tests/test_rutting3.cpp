@@ -83,6 +83,34 @@ TEST_CASE("3D: a small box of 2# gives the numbers pinned for it", "[rutting3][p
                                  {179, 12.026809487404249}}});
 }
 
+// The same run, short, on the sanitizer build too (tests/sanitize.sh runs
+// [pinned][small]; the pin above takes some 30 times longer there): 1#,
+// whose stones random addition places at once (2#'s jam: 7 s here), 2 mm
+// spheres (about 1,450), alpha_T 1e6 (131 loading steps), 24 samples.
+// Its numbers are the same bits under gcc at -O2 and clang at -O0: a
+// random draw whose order the compiler chose once gave clang another
+// specimen. A regression pin, pinned 2026-12-04 as the one above.
+TEST_CASE("3D: a short run on a box of 1# gives the numbers pinned for it", "[rutting3][pinned][small]") {
+  vrut::SpecimenSettings3 s = vrut_test::small_box3(1, 1, 40.0);
+  s.sphere_radius = 2.0;
+  vrut::RuttingNumerics n = numerics3();
+  n.shift = 1e6;
+  n.samples = 24;
+  const vrut::RuttingResult3 run = vrut::run_rutting3<Kokkos::DefaultHostExecutionSpace>(
+      vrut::generate_specimen3(s), vrut::WheelTracking{}, materials3(), n);
+  const vrut::RuttingResult& res = run.result;
+  INFO(res.particles << " spheres, " << res.steps << " steps, dt " << res.dt << " s");
+  REQUIRE(res.samples.size() == 24);
+  CHECK(res.deformation_final > 1e-3);  // the plate went down
+  vrut_test::check_pinned(res, {3.6168017509490835,
+                                2.4005690794589127,
+                                517.99299161080921,
+                                {{1, 0.049802622287001275},
+                                 {5, 0.33898330631756957},
+                                 {11, 1.1619210006968139},
+                                 {17, 2.4154369406876457}}});
+}
+
 // Two seeds side by side in one Simulation give each seed's single run, bit
 // for bit: nothing of one specimen reaches the other, and the shared time
 // step is each one's own (the same box and sphere size).
