@@ -429,6 +429,22 @@ TEST_CASE("3D compaction: the stones reach 0.60 of a small box and share no poin
     CHECK(box.max().y() <= ps.height);
   }
   CHECK(worst < 1e-9);  // mm: rounding of the turns, on stones of a few mm
+  // A regression pin of the packing (renewed only on purpose, as the
+  // rutting pins): the steps, and where three stones came to rest, bit for
+  // bit. The compaction of 3# is this code on 3#'s classes; its smallest box
+  // that compacts (40 x 50 x 39.6 mm) takes about a minute, and smaller ones
+  // jam (30 x 30 x 38 and 26 x 26 x 38 mm: 60,000 steps, then refused), so
+  // the pin is on this box. Pinned 2026-12-04.
+  const std::size_t middle = p.stones.size() / 2, last = p.stones.size() - 1;
+  for (std::size_t k : {std::size_t{0}, middle, last})
+    std::printf("compaction pin: stone %zu of %zu at (%.17g, %.17g, %.17g), %ld steps\n", k, p.stones.size(),
+                p.stones[k].shape.centroid.x(), p.stones[k].shape.centroid.y(), p.stones[k].shape.centroid.z(),
+                p.compaction_steps);
+  REQUIRE(p.stones.size() == 408);
+  CHECK(p.compaction_steps == 9288);
+  CHECK(p.stones[0].shape.centroid == Point3(22.680493672239297, 18.931146446602419, 18.276917903520062));
+  CHECK(p.stones[middle].shape.centroid == Point3(8.8316167691918004, 13.823233599891875, 15.744388010091631));
+  CHECK(p.stones[last].shape.centroid == Point3(19.967914640648289, 5.0367512690355758, 2.2175685715586146));
 }
 
 // A stone whose centre wraps across the periodic depth keeps its contacts
