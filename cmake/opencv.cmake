@@ -4,9 +4,19 @@
 # every module (VTK, Qt, GStreamer, ...). The three modules' own -dev
 # packages hold what is needed, so where the package is missing the headers
 # and libraries are found directly.
-find_package(OpenCV 4 QUIET COMPONENTS core imgproc imgcodecs)
+# VRUT_IMAGES=OFF leaves OpenCV out (a machine without it, a GPU node say):
+# vrut::image then only tells the programs so (VRUT_NO_IMAGES), vrut-rutting
+# refuses --image with a reason, and vrut-specimen and the image tests are
+# not built.
+option(VRUT_IMAGES "Specimens from images (needs OpenCV)" ON)
 add_library(vrut_image INTERFACE)
 add_library(vrut::image ALIAS vrut_image)
+if(NOT VRUT_IMAGES)
+  target_link_libraries(vrut_image INTERFACE vrut::vrut)
+  target_compile_definitions(vrut_image INTERFACE VRUT_NO_IMAGES)
+  return()
+endif()
+find_package(OpenCV 4 QUIET COMPONENTS core imgproc imgcodecs)
 if(OpenCV_FOUND)
   target_include_directories(vrut_image INTERFACE ${OpenCV_INCLUDE_DIRS})
   target_link_libraries(vrut_image INTERFACE vrut::vrut opencv_core opencv_imgproc opencv_imgcodecs)

@@ -5,6 +5,10 @@
 # Kokkos 3.4 predates CUDA 13 and Hopper; four small fixes, each explained
 # below, make it build. Exits 77 when no nvcc is found.
 #   VRUT_CACHE=DIR   where it is kept (default ${XDG_CACHE_HOME:-$HOME/.cache}/vrut)
+#   VRUT_CUDA_OPENMP=1  the host side on OpenMP too (Serial, OpenMP and CUDA):
+#                    the specimens' placement and compaction then use the host's
+#                    cores beside the GPU, as on a CPU build (a GPU machine has
+#                    many). Kept apart, in a prefix ending in -openmp.
 set -euo pipefail
 
 say() { echo "[vrut setup-cuda] $*" >&2; }
@@ -14,11 +18,14 @@ if ! command -v nvcc >/dev/null; then say "no nvcc found (PATH, /usr/local/cuda/
 cuda_version=$(nvcc --version | sed -n 's/.*release \([0-9.]*\),.*/\1/p')
 
 cache=${VRUT_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/vrut}
-prefix="$cache/kokkos-3.4.01-cuda${cuda_version}-sm90"
+host_openmp=()
+suffix=""
+if [[ ${VRUT_CUDA_OPENMP:-0} == 1 ]]; then host_openmp=(-DKokkos_ENABLE_OPENMP=ON) suffix="-openmp"; fi
+prefix="$cache/kokkos-3.4.01-cuda${cuda_version}-sm90${suffix}"
 if [[ -f "$prefix/.complete" ]]; then echo "$prefix"; exit 0; fi
 
-say "building Kokkos 3.4.01 (CUDA $cuda_version for sm_90 + Serial) into $prefix"
-work="$cache/work-cuda"; rm -rf "$work"
+say "building Kokkos 3.4.01 (CUDA $cuda_version for sm_90 + Serial${suffix:+ + OpenMP}) into $prefix"
+work="$cache/work-cuda${suffix}"; rm -rf "$work"
 # shellcheck source=kokkos_source.sh
 source "$here/scripts/kokkos_source.sh"
 src=$(kokkos_source "$work") || exit 1
@@ -50,7 +57,8 @@ grep -q '^default_arch="sm_90"' "$src/bin/nvcc_wrapper" || { say "fix 3 did not 
 sed -i 's/CHECK_CUDA_ARCH(AMPERE80  sm_80)/CHECK_CUDA_ARCH(AMPERE80  sm_90)/' "$src/cmake/kokkos_arch.cmake"
 grep -q 'CHECK_CUDA_ARCH(AMPERE80  sm_90)' "$src/cmake/kokkos_arch.cmake" || { say "fix 4 did not apply"; exit 1; }
 
-kokkos_build "$src" "$work" "$prefix" "$cache/kokkos-cuda-build.log" -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" \
-  -DKokkos_ENABLE_SERIAL=ON -DKokkos_ENABLE_CUDA=ON -DKokkos_ENABLE_CUDA_LAMBDA=ON -DKokkos_ARCH_AMPERE80=ON || exit 1
+kokkos_build "$src" "$work" "$prefix" "$cache/kokkos-cuda${suffix}-build.log" -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" \
+  -DKokkos_ENABLE_SERIAL=ON "${host_openmp[@]}" -DKokkos_ENABLE_CUDA=ON -DKokkos_ENABLE_CUDA_LAMBDA=ON \
+  -DKokkos_ARCH_AMPERE80=ON || exit 1
 say "Kokkos (CUDA) installed in $prefix"
 echo "$prefix"

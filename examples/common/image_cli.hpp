@@ -4,17 +4,35 @@
 #include "cli.hpp"
 #include "specimen_cli.hpp"
 
+#include <vrut/specimen/image_settings.hpp>
+#include <vrut/specimen/specimen.hpp>
+#ifndef VRUT_NO_IMAGES
 #include <vrut/specimen/image.hpp>
+#endif
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#ifndef VRUT_NO_IMAGES
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#endif
 
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
+
+#ifdef VRUT_NO_IMAGES
+// Built without OpenCV (VRUT_IMAGES=OFF, for machines that lack it, a GPU
+// node say): the options are known, and an image is refused with a reason.
+namespace vrut {
+inline Specimen specimen_from_image(const std::string& path, const ImageSettings&) {
+  throw std::invalid_argument("cannot read image " + path + ": this program was built without OpenCV "
+                              "(VRUT_IMAGES=OFF); build it with VRUT_IMAGES=ON to make specimens from images");
+}
+}  // namespace vrut
+#endif
 
 namespace image_cli {
 
@@ -99,6 +117,7 @@ inline vrut::ImageSettings to_settings(const ImageOptions& o, const specimen_cli
   return s;
 }
 
+#ifndef VRUT_NO_IMAGES
 // The original beside the segmentation: mastic black, voids white, every
 // stone in a colour of its own.
 inline void write_segmented_png(const vrut::SegmentedImage& seg, const std::string& path) {
@@ -173,5 +192,7 @@ inline nlohmann::json image_summary(const vrut::SegmentedImage& seg, const vrut:
   j["quantity_gradation"] = q;
   return j;
 }
+
+#endif  // VRUT_NO_IMAGES
 
 }  // namespace image_cli
