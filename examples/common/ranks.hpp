@@ -17,6 +17,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -114,7 +115,12 @@ struct SpecimenFacts {
 inline nlohmann::json to_json(const vrut::RuttingResult& r, const SpecimenFacts& f) {
   std::vector<std::uint8_t> samples(r.samples.size() * sizeof(vrut::RuttingSample));
   if (!samples.empty()) std::memcpy(samples.data(), r.samples.data(), samples.size());
+  // The skeleton record is plain numbers (rutting/skeleton_record.hpp): its bytes travel as they are.
+  static_assert(std::is_trivially_copyable_v<vrut::SkeletonRecord>);
+  std::vector<std::uint8_t> skeleton(sizeof(vrut::SkeletonRecord));
+  std::memcpy(skeleton.data(), &r.skeleton, skeleton.size());
   return {{"samples", nlohmann::json::binary(std::move(samples))},
+          {"skeleton", nlohmann::json::binary(std::move(skeleton))},
           {"deformation_at_ds_start", r.deformation_at_ds_start},
           {"deformation_final", r.deformation_final},
           {"dynamic_stability", r.dynamic_stability},  // CBOR keeps infinity and NaN
@@ -132,6 +138,9 @@ inline std::pair<vrut::RuttingResult, SpecimenFacts> from_json(const nlohmann::j
   const auto& bytes = j.at("samples").get_binary();
   r.samples.resize(bytes.size() / sizeof(vrut::RuttingSample));
   if (!bytes.empty()) std::memcpy(static_cast<void*>(r.samples.data()), bytes.data(), bytes.size());
+  const auto& skeleton = j.at("skeleton").get_binary();
+  if (skeleton.size() != sizeof(vrut::SkeletonRecord)) throw std::runtime_error("a rank sent a skeleton record of another size");
+  std::memcpy(static_cast<void*>(&r.skeleton), skeleton.data(), skeleton.size());
   r.deformation_at_ds_start = j.at("deformation_at_ds_start");
   r.deformation_final = j.at("deformation_final");
   r.dynamic_stability = j.at("dynamic_stability");

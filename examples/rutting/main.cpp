@@ -104,11 +104,15 @@ int main(int argc, char** argv) {
     if (from_images && (!seeds_text.empty() || o.seed_given))
       throw std::invalid_argument("--image gives the specimens: --seed and --seeds do not go with it");
     vrut::SpecimenSettings ss = to_settings(so);
+    o.mat.least_film = least_film_m(o.least_film, ss.gradation, ss.mix);
     // Everything checkable is checked before the specimen is made.
     mat.mastic.validate();
     vrut::validate_poisson(mat.mastic_nu);
     vrut::validate_poisson(mat.aggregate_nu);
     vrut::TimeShift{num.shift};
+    // The contact table refuses what the materials cannot make (a least film
+    // without the film per contact, say), before any output.
+    vrut::rutting_table(mat, wt.wheel_width, num.shift, 1, 2e-3 * so.disk_radius_mm);
     if (!from_images) wt.validate(ss.placement.width * 1e-3);
     // The images are read, and their specimens made and checked, before the
     // output folder is: a bad image leaves nothing behind.
@@ -240,6 +244,7 @@ int main(int argc, char** argv) {
     const std::string what_was_run = from_images ? (images.size() > 1 ? "images" : "image " + images.front())
                                                  : "gradation " + ss.gradation.name;
     write_deformation(*output, runs, report, seeds, ensemble, "Virtual wheel-tracking test, " + what_was_run);
+    write_skeleton_plot(*output, runs, "2D, " + what_was_run);
 
     // Pictures and VTK of the first specimen.
     draw::specimen_png(sp, output->file("specimen.png").string());
@@ -262,6 +267,7 @@ int main(int argc, char** argv) {
     j["rigid_stones"] = mat.rigid_stones;
     j["stone_film"] = stone_film;
     j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
+    j["least_film_um"] = mat.least_film * 1e6;  // a candidate (docs/validation.md); 0 in the model
     j["wall_seconds"] = wall_seconds;
     j["mpi_ranks"] = session.size();
     j["backend"] = backend;
@@ -273,6 +279,7 @@ int main(int argc, char** argv) {
     add_shared_summary(j, res, report, interrupted, minutes_done);
     j["specimen"] = specimen_cli::specimen_summary(sp);
     if (ensemble) j["ensemble"] = ensemble_json(runs, report, seeds, facts, interrupted, "disks");
+    j["skeleton"] = skeleton_summary_json(runs);
     output->write_text("summary.json", j.dump(2) + '\n');
     // The checkpoint of a stopped run goes with its partial results; a run
     // that ended needs none.

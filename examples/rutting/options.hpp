@@ -10,9 +10,12 @@
 #include <vrut/backend.hpp>
 #include <vrut/io/checkpoint.hpp>
 #include <vrut/protocol/rutting.hpp>
+#include <vrut/specimen/binder_film.hpp>
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -30,6 +33,7 @@ struct RunOptions {
   vrut::RuttingMaterials mat;
   vrut::RuttingNumerics num;
   std::string backend = "openmp", out = "out/rutting", conversion = "seed", stone_film = "per-contact", seeds_text;
+  std::string least_film = "none";  // --least-film: none, binder or micrometres (least_film_m)
   int threads = 0;
   bool force = false, exact_stones = false;
   double checkpoint_every = 0.0;
@@ -62,6 +66,23 @@ struct RunOptions {
     wt.travel = travel_mm * 1e-3;
   }
 };
+
+// --least-film's thickness, m: none (0), binder (two binder films of the
+// mix, one on each stone: specimen/binder_film.hpp), or micrometres.
+inline double least_film_m(const std::string& text, const vrut::Gradation& g, const vrut::MixVolumetrics& mix) {
+  if (text == "none") return 0.0;
+  if (text == "binder") return 2.0 * vrut::binder_film(g, mix).thickness_um * 1e-6;
+  std::size_t used = 0;
+  double um = -1.0;
+  try {
+    um = std::stod(text, &used);
+  } catch (const std::logic_error&) {
+    used = 0;
+  }
+  if (used != text.size() || !(um >= 0.0) || !std::isfinite(um))
+    throw std::invalid_argument("--least-film: '" + text + "' is none, binder or a thickness in micrometres (>= 0)");
+  return um * 1e-6;
+}
 
 // Options that a resumed run may change: where and how fast it runs, not what.
 const std::vector<std::string> resumable_options = {"--backend", "--threads", "--checkpoint-every"};
@@ -118,6 +139,19 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                  "--stone-film mean: the film's thickness, in disk diameters (0.40: the mean gap between two stones' "
                  "outlines in 2# where their disks are neighbours)")
       ->check(cli::finite_range(0.01, 0.99))->capture_default_str()->group("Materials");
+  app.add_option("--least-film", o.least_film,
+                 "a candidate, not the model: the thinnest film two stones meet through, so their spring bears only "
+                 "past it: none, binder (two binder films of the mix from its gradation and volumetrics, "
+                 "docs/validation.md) or micrometres; with --stone-film per-contact")
+      ->check([](const std::string& v) {
+        try {
+          least_film_m(v == "binder" ? "0" : v, vrut::builtin_gradation(2), vrut::MixVolumetrics{});
+        } catch (const std::invalid_argument& e) {
+          return std::string(e.what()).substr(std::string("--least-film: ").size());  // CLI11 names the option
+        }
+        return std::string();
+      })
+      ->capture_default_str()->group("Materials");
   app.add_flag("--film-endless", mat.film_endless,
                "--stone-film mean: the film never squeezes out, the stones never bear (refused with the others)")
       ->group("Materials");  // no CLI excludes: config.ini holds every option, and reads back

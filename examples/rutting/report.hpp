@@ -5,6 +5,7 @@
 #include "../common/ranks.hpp"
 #include "../common/seeds.hpp"
 #include "outputs.hpp"
+#include "skeleton_report.hpp"
 
 #include <vrut/analysis/rutting_ensemble.hpp>
 #include <vrut/analysis/seeds_csv.hpp>
@@ -116,7 +117,7 @@ void write_deformation(vrut::OutputDir& output, const std::vector<vrut::RuttingR
   vrut::write_plot_png(output.file("deformation.png").string(), spec, series);
 }
 
-// seeds.csv: each specimen's numbers. facts_columns names the particles'
+// seeds.csv: each specimen's numbers, its skeleton's (skeleton_report.hpp) after them. facts_columns names the particles'
 // and stones' columns ("disks,aggregates,aggregate_area_fraction" in 2D);
 // images, where given, add the image each specimen came from.
 void write_seeds_csv(vrut::OutputDir& output, const std::vector<vrut::RuttingResult>& runs, const RuttingReport& report,
@@ -124,7 +125,7 @@ void write_seeds_csv(vrut::OutputDir& output, const std::vector<vrut::RuttingRes
                      const std::string& facts_columns, bool interrupted, const std::vector<std::string>& images = {}) {
   std::ostringstream per_seed;
   per_seed.precision(17);
-  per_seed << "seed," << facts_columns << ',' << vrut::seeds_csv_result_columns
+  per_seed << "seed," << facts_columns << ',' << vrut::seeds_csv_result_columns << ',' << skeleton_csv_columns
            << (images.empty() ? "\n" : ",image\n");
   for (std::size_t e = 0; e < runs.size(); ++e) {
     per_seed << seeds[e] << ',' << runs[e].particles << ',' << facts[e].aggregates << ','
@@ -137,6 +138,7 @@ void write_seeds_csv(vrut::OutputDir& output, const std::vector<vrut::RuttingRes
       per_seed << "nan,nan";  // a run stopped before its end has no DS
     else
       per_seed << report.reported[e].value << ',' << (report.reported[e].censored ? 1 : 0);
+    per_seed << ',' << skeleton_csv_cells(runs[e]);
     if (!images.empty()) per_seed << ',' << images[seeds[e] - 1];
     per_seed << '\n';
   }

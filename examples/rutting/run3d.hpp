@@ -91,6 +91,7 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   vrut::validate_poisson(mat.aggregate_nu);
   vrut::TimeShift{num.shift};
   vrut::SpecimenSettings3 ss = specimen_cli::to_settings3(o.so, o.o3);
+  o.mat.least_film = least_film_m(o.least_film, ss.gradation, ss.mix);
   wt.validate(ss.placement.width * 1e-3);
   vrut::rutting_table3(mat, 2e-3 * ss.sphere_radius, num.shift);  // refuses what 3D cannot run, before any output
   const std::vector<std::uint64_t> seeds =
@@ -196,6 +197,7 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   const RuttingReport report = report_runs(runs, wt, ensemble, interrupted);
   const std::string what_was_run = "gradation " + ss.gradation.name + ", 3D";
   write_deformation(output, runs, report, seeds, ensemble, "Virtual wheel-tracking test in 3D, gradation " + ss.gradation.name);
+  write_skeleton_plot(output, runs, "3D, gradation " + ss.gradation.name);
   if (ensemble)
     write_seeds_csv(output, runs, report, seeds, facts, "spheres,placed_stones,stone_volume_fraction", interrupted);
   // Pictures and VTK of the first specimen.
@@ -218,6 +220,7 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   j["rigid_stones"] = true;
   j["stone_film"] = o.stone_film;
   j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
+  j["least_film_um"] = mat.least_film * 1e6;  // a candidate (docs/validation.md); 0 in the model
   j["calibrated"] = false;  // 3D fits no constant on 2# (docs/validation.md, "The factor at 1 mm")
   j["wall_seconds"] = wall_seconds;
   j["backend"] = o.backend;
@@ -229,6 +232,7 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   add_shared_summary(j, res, report, interrupted, minutes_done);
   j["specimen"] = specimen_cli::specimen3_summary(sp);
   if (ensemble) j["ensemble"] = ensemble_json(runs, report, seeds, facts, interrupted, "spheres");
+  j["skeleton"] = skeleton_summary_json(runs);
   output.write_text("summary.json", j.dump(2) + '\n');
   // The checkpoint of a stopped run goes with its partial results.
   if (interrupted) fs::rename(checkpoint.path(), output.file(checkpoint.path().filename().string()));

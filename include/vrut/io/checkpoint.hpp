@@ -30,7 +30,9 @@
 namespace vrut {
 
 // 2 (2026-12-03): the loading's time step kept, and checked on resume.
-inline constexpr int checkpoint_format = 2;
+// 3 (2026-12-04): each specimen's skeleton record (the films at the start,
+// the early load path: rutting/skeleton_record.hpp).
+inline constexpr int checkpoint_format = 3;
 inline constexpr const char* checkpoint_magic = "vrut checkpoint\n";
 
 // A checkpoint that cannot be used: not one, damaged, from another version,

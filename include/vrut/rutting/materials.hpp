@@ -64,6 +64,14 @@ struct RuttingMaterials {
   bool film_endless = false;
   bool films() const { return stone_film != StoneFilm::none; }
   bool film_per_contact() const { return stone_film == StoneFilm::per_contact; }
+  // The thinnest film two stones meet through, m (0: none, the frozen
+  // model): a candidate of the fidelity study (docs/validation.md, "No
+  // stone pair bears bare"), not adopted unless that section says so. With
+  // the film per contact every pair of stones' particles meets through at
+  // least this much binder, so the stones' spring engages only past it: two
+  // coated stones touch through two binder films (specimen/binder_film.hpp
+  // gives one's thickness from the mix's volumetrics; --least-film binder).
+  double least_film = 0.0;
   double wall_friction = 0.0;           // mould walls and plate
   // Rigid stones (data/bodies.hpp), the default: each aggregate moves as one
   // body instead of method.md's bonded disks on the stone's 2 t E springs
@@ -215,8 +223,17 @@ inline AssignmentTable<RuttingLaw> rutting_table_with(const RuttingMaterials& m,
                                                                stone_params.normal.stiffness,
                                                                stone_params.shear.stiffness));
   };
+  if (m.least_film != 0.0) {
+    if (!(m.least_film > 0.0) || !std::isfinite(m.least_film))
+      throw std::invalid_argument("the least film between stones must be positive, got " + std::to_string(m.least_film) + " m");
+    if (!m.film_per_contact())
+      throw std::invalid_argument("a least film between stones goes with the film per contact (stone film 'per-contact')");
+    if (!(m.least_film < disk_diameter))
+      throw std::invalid_argument("the least film between stones must be thinner than a particle's diameter");
+  }
+  const double least_gap = m.least_film > 0.0 ? m.least_film / disk_diameter : 0.0;  // diameters
   auto film_between_bins = [&](int p, int q) {
-    return film(std::max(0.0, 1.0 - reach_class_middle(p, bins) - reach_class_middle(q, bins)));
+    return film(std::max(least_gap, 1.0 - reach_class_middle(p, bins) - reach_class_middle(q, bins)));
   };
   const auto mean_film = films && !m.film_per_contact() ? film(m.film_gap) : RuttingLaw::params_type{};
   for (int a = 1; a < table.groups(); ++a) {

@@ -1,10 +1,12 @@
 #pragma once
 // What the rutting test measures: the deformation curve, the snapshots,
 // and the rut depth and dynamic stability worked out from the curve.
+#include <vrut/rutting/skeleton_record.hpp>
 #include <vrut/rutting/test.hpp>
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace vrut {
@@ -38,9 +40,21 @@ struct RuttingResult {
   // At the end: the stones holding disks, and the pairs of them that touch
   // (some disk of one overlaps some disk of the other): the skeleton.
   int stones = 0, stone_pairs_touching = 0;
+  SkeletonRecord skeleton;                 // what holds the specimen up (rutting/skeleton.hpp)
   bool interrupted = false;                // stopped early on request: the samples so far, no DS
   long steps = 0;
   double dt = 0.0, wall_seconds = 0.0;
+
+  // Stones touching per stone at the end: each touching pair counts for both.
+  double stones_touching_per_stone() const {
+    return stones > 0 ? 2.0 * stone_pairs_touching / stones : std::numeric_limits<double>::quiet_NaN();
+  }
+  // The share of the final rut that came after the DS window's start (minute
+  // 45 of 60): (d60 - d45) / d60, the curve's late creep.
+  double late_creep_share() const {
+    return deformation_final > 0.0 ? (deformation_final - deformation_at_ds_start) / deformation_final
+                                   : std::numeric_limits<double>::quiet_NaN();
+  }
 };
 
 // Deformation at the DS start minute (interpolated), at the end, and the DS

@@ -12,6 +12,7 @@
 #include <vrut/rutting/loading.hpp>
 #include <vrut/rutting/materials.hpp>
 #include <vrut/rutting/result.hpp>
+#include <vrut/rutting/skeleton.hpp>
 #include <vrut/rutting/test.hpp>
 #include <vrut/servo/servo.hpp>
 #include <vrut/specimen/colouring.hpp>
@@ -257,6 +258,16 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     plate[e] = sim.add_wall(Wall{{res.plate_x1, top[e]}, {res.plate_x0, top[e]}, {}}, wall_law,
                             LoadControl::for_stress(0.0, l, t, plate_mass[e], 0.0), e);
   }
+  // The skeleton (rutting/skeleton.hpp): cut at half the specimen's height, under its plate.
+  auto skeleton = [&](int e) {
+    SkeletonCut cut;
+    cut.height = 0.5e-3 * specimens[e].height;
+    cut.x0 = results[e].plate_x0;
+    cut.x1 = results[e].plate_x1;
+    cut.diameter = 2e-3 * specimens[e].disks.radius;
+    return skeleton_snapshot(sim, table, e, cut);
+  };
+  for (int e = 0; e < count; ++e) results[e].skeleton.films_start = skeleton(e).films;
   auto ramp_to = [&](double fraction) {
     const double stress = wt.plate_force() * fraction / (l * t);
     for (int e = 0; e < count; ++e)
@@ -298,6 +309,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     for (int e = 0; e < count; ++e) {
       const std::string id = "specimen_" + std::to_string(e) + "_";
       archive.vector(id + "samples", results[e].samples);
+      results[e].skeleton.visit(archive, id);
       int shots = static_cast<int>(results[e].snapshots.size());
       archive.value(id + "snapshots", shots);
       results[e].snapshots.resize(shots);
@@ -335,6 +347,11 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
       smp.deformation = top[e] - w.start.y;
       smp.plate_pressure = state.plate_sample(e, impulse[plate[e]], w.start, inward_normal(w), time, l * t);
       results[e].samples.push_back(smp);
+      LoadPath& early = results[e].skeleton.load_early;
+      if (!early.measured() && smp.minutes >= SkeletonRecord::early_minute) {
+        early = skeleton(e).load;
+        early.minutes = smp.minutes;
+      }
     }
     check_energy(sim, energy_reference, state.plate_work, s, dt);
   };
@@ -356,6 +373,10 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     std::tie(res.stones, res.stone_pairs_touching) =
         touching_stones(sim, specimens[e].disks.aggregate, specimens[e].placement.aggregates.size(), e);
     res.plate_y_final = walls[plate[e]].start.y;
+    const SkeletonSnapshot end = skeleton(e);
+    res.skeleton.films_end = end.films;
+    res.skeleton.load_end = end.load;
+    res.skeleton.load_end.minutes = res.samples.empty() ? 0.0 : res.samples.back().minutes;
     const auto [first, last] = sim.specimen_range(e);
     for (int i = first; i < last; ++i) {
       res.vx.push_back(v(i).x);

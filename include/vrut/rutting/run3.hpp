@@ -27,6 +27,7 @@
 #include <vrut/rutting/materials.hpp>
 #include <vrut/rutting/result.hpp>
 #include <vrut/rutting/run.hpp>
+#include <vrut/rutting/skeleton.hpp>
 #include <vrut/rutting/test.hpp>
 #include <vrut/servo/servo.hpp>
 #include <vrut/specimen/specimen3.hpp>
@@ -217,6 +218,16 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
                               LoadControl::for_stress(0.0, l, depth, plate_mass, 0.0), e);
     }
   }
+  // The skeleton (rutting/skeleton.hpp): cut at half the specimen's height, under its plate.
+  auto skeleton = [&](int e) {
+    SkeletonCut cut;
+    cut.height = 0.5 * height;
+    cut.x0 = plate_x0;
+    cut.x1 = plate_x1;
+    cut.diameter = d;
+    return skeleton_snapshot(sim, table, e, cut);
+  };
+  for (int e = 0; e < count; ++e) out[e].result.skeleton.films_start = skeleton(e).films;
   auto ramp_to = [&](double fraction) {
     for (int e = 0; e < count; ++e)
       sim.set_controller(plate[e], LoadControl::for_stress(wt.pressure * fraction, l, depth, plate_mass, 0.0));
@@ -235,7 +246,11 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
     archive.view("loading_start", start);
     state.visit(archive);
     archive.view("energy_reference", energy_reference);
-    for (int e = 0; e < count; ++e) archive.vector("specimen_" + std::to_string(e) + "_samples", out[e].result.samples);
+    for (int e = 0; e < count; ++e) {
+      const std::string id = "specimen_" + std::to_string(e) + "_";
+      archive.vector(id + "samples", out[e].result.samples);
+      out[e].result.skeleton.visit(archive, id);
+    }
   };
   state.begin = std::chrono::steady_clock::now();
   if (resuming) {
@@ -252,6 +267,11 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
       smp.deformation = top[e] - w.centre.y;
       smp.plate_pressure = state.plate_sample(e, sim.wall_impulse(plate[e]), w.centre, inward_normal(w), time, l * depth);
       out[e].result.samples.push_back(smp);
+      LoadPath& early = out[e].result.skeleton.load_early;
+      if (!early.measured() && smp.minutes >= SkeletonRecord::early_minute) {
+        early = skeleton(e).load;
+        early.minutes = smp.minutes;
+      }
     }
     check_energy(sim, energy_reference, state.plate_work, s, dt);
   };
@@ -271,6 +291,10 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
     std::tie(res.stones, res.stone_pairs_touching) =
         touching_stones(sim, specimens[e].spheres.stone, specimens[e].placement.stones.size(), e);
     res.plate_y_final = sim.wall(plate[e]).centre.y;
+    const SkeletonSnapshot end = skeleton(e);
+    res.skeleton.films_end = end.films;
+    res.skeleton.load_end = end.load;
+    res.skeleton.load_end.minutes = res.samples.empty() ? 0.0 : res.samples.back().minutes;
     const auto [first, last] = sim.specimen_range(e);
     for (int i = first; i < last; ++i) {
       out[e].final_positions.push_back(1e3 * Point3(x(i).x, x(i).y, x(i).z));

@@ -1,0 +1,130 @@
+#pragma once
+// What holds a rutting specimen up (issue 44's diagnostics), in 2D and 3D:
+//   - the load path: the vertical force that crosses a horizontal cut at
+//     half the specimen's height, under the plate, by the class of contact
+//     that carries it: two stones bearing on the stones' spring (their
+//     overlap beyond the film between them, or no film at all), two stones
+//     on their film alone, and contacts with mastic;
+//   - the stones' film census: the contacts between two stones' particles
+//     by the thickness of the film between them (as the reach bins give it),
+//     and how many of them bear on the stones' spring.
+// Host-only: it copies the particles and the contact list to the host.
+//
+// The cut. A particle lies above or below it by its centre; a stone's
+// particles (one rigid body) all lie where the stone's centroid lies, so
+// that the load a stone carries inside itself from one side to the other
+// (it has no contacts there) is counted where it enters the stone. Then
+// every force from below to above the cut acts in a contact between a
+// particle below and one above, and the forces of those contacts sum to
+// the load that the part above passes down: the plate's load and the
+// weight above, less what the mould's walls hold (nothing, frictionless).
+// Under the plate: the contact's point lies between the plate's ends.
+#include <vrut/rutting/materials.hpp>
+#include <vrut/rutting/skeleton_record.hpp>
+#include <vrut/specimen/specimen.hpp>
+
+#include <Kokkos_Core.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace vrut {
+
+static_assert(film_census_bins == film_reach_classes + 1, "the census has a bin for each film thickness the reach bins give");
+
+// Where a specimen is cut (m), and its particles' diameter (m), which the
+// films' thickness is counted in.
+struct SkeletonCut {
+  double height = 0.0;         // the cut's
+  double x0 = 0.0, x1 = 0.0;   // the plate's ends
+  double diameter = 0.0;
+};
+
+// How a contact between particles of groups a and b, overlapping by
+// `overlap` (m), carries its load under a rutting table.
+enum class ContactClass { stone_spring, stone_film, mastic };
+
+inline ContactClass classify_contact(const RuttingLaw::params_type& p, int group_a, int group_b, double overlap) {
+  if (group_a == mastic_group || group_b == mastic_group) return ContactClass::mastic;
+  if (p.use_second) return ContactClass::stone_spring;  // stones meeting bare (no film)
+  const auto& film = p.first.normal;
+  return film.stone_stiffness > 0.0 && overlap > film.thickness ? ContactClass::stone_spring : ContactClass::stone_film;
+}
+
+// The film between two stones' particles, in diameters (0 where they meet bare).
+inline double film_thickness(const RuttingLaw::params_type& p, double diameter) {
+  return p.use_second ? 0.0 : p.first.normal.thickness / diameter;
+}
+
+struct SkeletonSnapshot {
+  LoadPath load;
+  FilmCensus films;
+};
+
+// The load path across `cut` and the film census of specimen e of `sim`, its
+// contact table `table`, at the contacts' last computed loads.
+template <class Sim>
+SkeletonSnapshot skeleton_snapshot(const Sim& sim, const AssignmentTable<RuttingLaw>& table, int e,
+                                   const SkeletonCut& cut) {
+  const auto& ps = sim.particles();
+  const auto& cl = sim.contacts();
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.position);
+  auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.radius);
+  auto group = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.group);
+  auto body = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.body);
+  auto partner = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cl.partner);
+  auto count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cl.count);
+  auto load = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cl.load);
+  const auto box = cl.box;  // the nearest image across a periodic axis
+  const auto [first, last] = sim.specimen_range(e);
+
+  // Each body's centroid height: its members' mean (a stone's spheres share a
+  // size and a density, so that is its centre of mass).
+  std::vector<double> body_height, body_members;
+  for (int i = first; i < last; ++i) {
+    const int b = body(i);
+    if (b < 0) continue;
+    if (b >= static_cast<int>(body_height.size())) body_height.resize(b + 1, 0.0), body_members.resize(b + 1, 0.0);
+    body_height[b] += x(i).y;
+    body_members[b] += 1.0;
+  }
+  auto above = [&](int i) {
+    const int b = body(i);
+    return (b >= 0 ? body_height[b] / body_members[b] : x(i).y) > cut.height;
+  };
+
+  SkeletonSnapshot out;
+  for (int i = first; i < last; ++i)
+    for (int k = 0; k < count(i); ++k) {
+      const int j = partner(i, k);
+      const auto d = box.separation(x(i), x(j));  // from i to j
+      const double dist = norm(d);
+      const double overlap = r(i) + r(j) - dist;
+      if (!(overlap > 0.0)) continue;
+      const auto& p = table(group(i), group(j));
+      const ContactClass c = classify_contact(p, group(i), group(j), overlap);
+      if (group(i) != mastic_group && group(j) != mastic_group && (body(i) < 0 || body(i) != body(j))) {
+        const double t = film_thickness(p, cut.diameter);
+        const int bin = std::min(film_census_bins - 1, std::max(0, static_cast<int>(std::lround(t / film_census_step))));
+        ++out.films.contacts[bin];
+        if (c == ContactClass::stone_spring) ++out.films.bearing[bin];
+      }
+      const bool i_above = above(i), j_above = above(j);
+      if (i_above == j_above) continue;
+      // The contact's point: the middle of the overlap on the line of centres.
+      const double point_x = x(i).x + (r(i) - 0.5 * overlap) / dist * d.x;
+      if (point_x < cut.x0 || point_x > cut.x1) continue;
+      // load(i, k).force acts on j; the part above takes the force from below.
+      const double up = j_above ? load(i, k).force.y : -load(i, k).force.y;
+      if (c == ContactClass::stone_spring)
+        out.load.stone_spring += up;
+      else if (c == ContactClass::stone_film)
+        out.load.stone_film += up;
+      else
+        out.load.mastic += up;
+    }
+  return out;
+}
+
+}  // namespace vrut
