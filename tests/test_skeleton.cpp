@@ -125,3 +125,45 @@ TEST_CASE("a contact's class: mastic, stones on their film, stones on their spri
   CHECK(vrut::classify_contact(endless, 1, 2, 0.5e-3) == vrut::ContactClass::stone_film);
   CHECK(vrut::film_thickness(film, 2e-3) == Approx(0.1));
 }
+
+TEMPLATE_LIST_TEST_CASE("3D: the load path across a cut, the same three columns of spheres at rest",
+                        "[physics][skeleton]", vrut_test::ExecutionSpaces) {
+  using Space = TestType;
+  Columns c = three_columns();  // its table; the spheres replace the disks
+  vrut::RuttingMaterials m;
+  const double pi = std::acos(-1.0), depth = 10e-3;
+  c.m_stone = m.aggregate_density * 4.0 / 3.0 * pi * r * r * r;
+  c.m_mastic = m.mastic_density * 4.0 / 3.0 * pi * r * r * r;
+  vrut::ParticleSet set;
+  for (int k = 0; k < 4; ++k) {
+    const double y = (2 * k + 1) * r;
+    set.add_sphere(10e-3, y, 0.5 * depth, r, m.aggregate_density, k == 0 ? 1 : 2, k == 0 ? -1 : 0);
+    set.add_sphere(20e-3, y, 0.5 * depth, r, m.aggregate_density, k % 2 == 0 ? 3 : 4);
+    set.add_sphere(30e-3, y, 0.5 * depth, r, m.mastic_density, vrut::mastic_group);
+  }
+  vrut::SimulationSettings3 settings;
+  settings.gravity = {0.0, -g, 0.0};
+  settings.box.high = {40e-3, 20e-3, depth};
+  settings.box.periodic[2] = true;  // as the 3D test's box
+  vrut::CentralDifference::params_type settle;
+  settle.damping = 0.7;
+  vrut::Simulation3<vrut::RuttingLaw, Space, vrut::CentralDifference, vrut::LoadControl, vrut::RuttingWallLaw> sim(
+      set, c.table, settings, settle, Space());
+  sim.add_wall(vrut::Wall3{{20e-3, 0.0, 0.5 * depth}, {0.0, 0.0, depth}, {20e-3, 0.0, 0.0}, {}},
+               vrut::rutting_wall_params(m, t), {}, 0);
+  sim.run(40000, 0.3 * sim.critical_timestep());
+
+  vrut::SkeletonCut cut;
+  cut.height = 4.0 * r;
+  cut.x0 = 0.0;
+  cut.x1 = 40e-3;
+  cut.diameter = 2.0 * r;
+  const vrut::SkeletonSnapshot all = vrut::skeleton_snapshot(sim, c.table, 0, cut);
+  CHECK(all.load.stone_spring == Approx(3.0 * c.m_stone * g).epsilon(1e-8));
+  CHECK(all.load.stone_film == Approx(2.0 * c.m_stone * g).epsilon(1e-8));
+  CHECK(all.load.mastic == Approx(2.0 * c.m_mastic * g).epsilon(1e-8));
+  CHECK(all.films.contacts[0] == 1);
+  CHECK(all.films.bearing[0] == 1);
+  CHECK(all.films.contacts[2] == 3);
+  CHECK(all.films.bearing[2] == 0);
+}
