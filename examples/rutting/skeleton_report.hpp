@@ -94,7 +94,8 @@ nlohmann::json skeleton_summary_json(const std::vector<vrut::RuttingResult>& run
   nlohmann::json per = nlohmann::json::array();
   for (const auto& r : runs) per.push_back(skeleton_json(r));
   return {{"about",
-           "load path: the vertical force crossing a horizontal cut at half the specimen's height under the plate, "
+           "load path: the vertical force crossing a horizontal cut half way between the floor and the plate (where it "
+           "is then), under the plate, "
            "by class of contact (stone_spring: two stones bearing on the stones' spring, their overlap beyond the "
            "film between them; stone_film: two stones on their film alone; mastic: any contact with a mastic "
            "particle); a stone lies on the side of its centroid. stone films: the overlapping contacts between two "

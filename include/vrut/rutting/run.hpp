@@ -258,10 +258,12 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     plate[e] = sim.add_wall(Wall{{res.plate_x1, top[e]}, {res.plate_x0, top[e]}, {}}, wall_law,
                             LoadControl::for_stress(0.0, l, t, plate_mass[e], 0.0), e);
   }
-  // The skeleton (rutting/skeleton.hpp): cut at half the specimen's height, under its plate.
+  // The skeleton (rutting/skeleton.hpp): cut half way between the floor and
+  // the plate where it is now (a deep rut brings the plate near the
+  // specimen's first mid-height), under the plate.
   auto skeleton = [&](int e) {
     SkeletonCut cut;
-    cut.height = 0.5e-3 * specimens[e].height;
+    cut.height = 0.5 * sim.wall(plate[e]).start.y;
     cut.x0 = results[e].plate_x0;
     cut.x1 = results[e].plate_x1;
     cut.diameter = 2e-3 * specimens[e].disks.radius;

@@ -218,10 +218,11 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
                               LoadControl::for_stress(0.0, l, depth, plate_mass, 0.0), e);
     }
   }
-  // The skeleton (rutting/skeleton.hpp): cut at half the specimen's height, under its plate.
+  // The skeleton (rutting/skeleton.hpp): cut half way between the floor and
+  // the plate where it is now, under the plate (run.hpp).
   auto skeleton = [&](int e) {
     SkeletonCut cut;
-    cut.height = 0.5 * height;
+    cut.height = 0.5 * sim.wall(plate[e]).centre.y;
     cut.x0 = plate_x0;
     cut.x1 = plate_x1;
     cut.diameter = d;

@@ -1,7 +1,8 @@
 #pragma once
 // What holds a rutting specimen up (issue 44's diagnostics), in 2D and 3D:
-//   - the load path: the vertical force that crosses a horizontal cut at
-//     half the specimen's height, under the plate, by the class of contact
+//   - the load path: the vertical force that crosses a horizontal cut (the
+//     runs put it half way between the floor and the plate), under the
+//     plate, by the class of contact
 //     that carries it: two stones bearing on the stones' spring (their
 //     overlap beyond the film between them, or no film at all), two stones
 //     on their film alone, and contacts with mastic;
