@@ -97,8 +97,8 @@ TEMPLATE_LIST_TEST_CASE("each specimen of an ensemble follows its single run bit
   const long steps = 10000;
   const auto together = run_boxes<TestType>(boxes, steps);
   REQUIRE(together.size() == boxes.size());
-  // The single runs on the host (so a host backend's ensemble is also held
-  // to Serial's bits), except on a GPU: its arithmetic differs from the
+  // The single runs on the default host space (so a host backend's ensemble
+  // is also held to that space's bits), except on a GPU: its arithmetic differs from the
   // CPU's in the last bits (nvcc fuses a * b + c into one rounding, the
   // host compiler does not), which the boxes' collisions amplify; seen on an
   // H200 (2026-12-04). There the single runs are the GPU's own.

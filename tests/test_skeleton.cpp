@@ -19,6 +19,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <vector>
 
 namespace {
 
@@ -26,6 +27,7 @@ constexpr double r = 1e-3, t = 0.05, g = 9.81;
 
 struct Columns {
   vrut::ParticleSet set;
+  std::vector<int> stone;  // each particle's stone, -1 mastic
   vrut::AssignmentTable<vrut::RuttingLaw> table{5};
   double m_stone = 0.0, m_mastic = 0.0;
 };
@@ -53,11 +55,18 @@ Columns three_columns() {
   const double pi = std::acos(-1.0);
   c.m_stone = m.aggregate_density * pi * r * r * t;
   c.m_mastic = m.mastic_density * pi * r * r * t;
+  // A and C from the bottom up; B from the top down, so that in its
+  // contacts the first particle (the list's i) is the upper one.
   for (int k = 0; k < 4; ++k) {
     const double y = (2 * k + 1) * r;
     c.set.add(10e-3, y, r, m.aggregate_density, k == 0 ? 1 : 2, k == 0 ? -1 : 0);  // A: disks 2-4 one body
-    c.set.add(20e-3, y, r, m.aggregate_density, k % 2 == 0 ? 3 : 4);                // B
+    c.stone.push_back(k == 0 ? 0 : 1);
     c.set.add(30e-3, y, r, m.mastic_density, vrut::mastic_group);                    // C
+    c.stone.push_back(-1);
+  }
+  for (int k = 3; k >= 0; --k) {
+    c.set.add(20e-3, (2 * k + 1) * r, r, m.aggregate_density, k % 2 == 0 ? 3 : 4);  // B
+    c.stone.push_back(2 + k);
   }
   return c;
 }
@@ -84,7 +93,7 @@ TEMPLATE_LIST_TEST_CASE("the load path across a cut: three columns at rest, work
   cut.x0 = 0.0;
   cut.x1 = 40e-3;
   cut.diameter = 2.0 * r;
-  const vrut::SkeletonSnapshot all = vrut::skeleton_snapshot(sim, c.table, 0, cut);
+  const vrut::SkeletonSnapshot all = vrut::skeleton_snapshot(sim, c.table, 0, cut, c.stone);
   // At rest to within 1e-8 of each weight (1e-10 seen): the damped columns ring
   // down in a few thousand steps of the 40,000.
   CHECK(all.load.stone_spring == Approx(3.0 * c.m_stone * g).epsilon(1e-8));
@@ -104,7 +113,7 @@ TEMPLATE_LIST_TEST_CASE("the load path across a cut: three columns at rest, work
   // Under a plate over column C alone only the mastic carries the load.
   cut.x0 = 25e-3;
   cut.x1 = 35e-3;
-  const vrut::SkeletonSnapshot c_only = vrut::skeleton_snapshot(sim, c.table, 0, cut);
+  const vrut::SkeletonSnapshot c_only = vrut::skeleton_snapshot(sim, c.table, 0, cut, c.stone);
   CHECK(c_only.load.stone_spring == 0.0);
   CHECK(c_only.load.stone_film == 0.0);
   CHECK(c_only.load.mastic == Approx(2.0 * c.m_mastic * g).epsilon(1e-8));
@@ -134,13 +143,13 @@ TEMPLATE_LIST_TEST_CASE("3D: the load path across a cut, the same three columns 
   const double pi = std::acos(-1.0), depth = 10e-3;
   c.m_stone = m.aggregate_density * 4.0 / 3.0 * pi * r * r * r;
   c.m_mastic = m.mastic_density * 4.0 / 3.0 * pi * r * r * r;
-  vrut::ParticleSet set;
+  vrut::ParticleSet set;  // in the order of the disks of three_columns()
   for (int k = 0; k < 4; ++k) {
     const double y = (2 * k + 1) * r;
     set.add_sphere(10e-3, y, 0.5 * depth, r, m.aggregate_density, k == 0 ? 1 : 2, k == 0 ? -1 : 0);
-    set.add_sphere(20e-3, y, 0.5 * depth, r, m.aggregate_density, k % 2 == 0 ? 3 : 4);
     set.add_sphere(30e-3, y, 0.5 * depth, r, m.mastic_density, vrut::mastic_group);
   }
+  for (int k = 3; k >= 0; --k) set.add_sphere(20e-3, (2 * k + 1) * r, 0.5 * depth, r, m.aggregate_density, k % 2 == 0 ? 3 : 4);
   vrut::SimulationSettings3 settings;
   settings.gravity = {0.0, -g, 0.0};
   settings.box.high = {40e-3, 20e-3, depth};
@@ -158,7 +167,7 @@ TEMPLATE_LIST_TEST_CASE("3D: the load path across a cut, the same three columns 
   cut.x0 = 0.0;
   cut.x1 = 40e-3;
   cut.diameter = 2.0 * r;
-  const vrut::SkeletonSnapshot all = vrut::skeleton_snapshot(sim, c.table, 0, cut);
+  const vrut::SkeletonSnapshot all = vrut::skeleton_snapshot(sim, c.table, 0, cut, c.stone);
   CHECK(all.load.stone_spring == Approx(3.0 * c.m_stone * g).epsilon(1e-8));
   CHECK(all.load.stone_film == Approx(2.0 * c.m_stone * g).epsilon(1e-8));
   CHECK(all.load.mastic == Approx(2.0 * c.m_mastic * g).epsilon(1e-8));

@@ -267,7 +267,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     cut.x0 = results[e].plate_x0;
     cut.x1 = results[e].plate_x1;
     cut.diameter = 2e-3 * specimens[e].disks.radius;
-    return skeleton_snapshot(sim, table, e, cut);
+    return skeleton_snapshot(sim, table, e, cut, specimens[e].disks.aggregate);
   };
   for (int e = 0; e < count; ++e) results[e].skeleton.films_start = skeleton(e).films;
   auto ramp_to = [&](double fraction) {

@@ -226,7 +226,7 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
     cut.x0 = plate_x0;
     cut.x1 = plate_x1;
     cut.diameter = d;
-    return skeleton_snapshot(sim, table, e, cut);
+    return skeleton_snapshot(sim, table, e, cut, specimens[e].spheres.stone);
   };
   for (int e = 0; e < count; ++e) out[e].result.skeleton.films_start = skeleton(e).films;
   auto ramp_to = [&](double fraction) {

@@ -12,14 +12,17 @@
 // Host-only: it copies the particles and the contact list to the host.
 //
 // The cut. A particle lies above or below it by its centre; a stone's
-// particles (one rigid body) all lie where the stone's centroid lies, so
-// that the load a stone carries inside itself from one side to the other
-// (it has no contacts there) is counted where it enters the stone. Then
+// particles (one rigid body, or the method's bonded disks) all lie where the
+// stone's centroid lies, so that the load a stone carries inside itself
+// from one side to the other is counted where it enters the stone. Then
 // every force from below to above the cut acts in a contact between a
-// particle below and one above, and the forces of those contacts sum to
-// the load that the part above passes down: the plate's load and the
-// weight above, less what the mould's walls hold (nothing, frictionless).
-// Under the plate: the contact's point lies between the plate's ends.
+// particle below and one above (overlapping, or held across a gap by a
+// bond). Over the whole width those forces sum to what the part above
+// passes down: the plate's load and the weight above, less what the
+// mould's walls hold (nothing where they are frictionless). Under the plate
+// alone (the contact's point between the plate's ends), as measured here,
+// the cut is not a closed free body: the load spreads sideways past the
+// plate's ends. The shares are of what crosses under the plate.
 #include <vrut/rutting/materials.hpp>
 #include <vrut/rutting/skeleton_record.hpp>
 #include <vrut/specimen/specimen.hpp>
@@ -64,35 +67,37 @@ struct SkeletonSnapshot {
 };
 
 // The load path across `cut` and the film census of specimen e of `sim`, its
-// contact table `table`, at the contacts' last computed loads.
+// contact table `table`, at the contacts' last computed loads. stone[i]: the
+// stone of the specimen's particle i (-1 for mastic), as the specimen gives
+// it (Specimen::disks.aggregate, Specimen3::spheres.stone).
 template <class Sim>
 SkeletonSnapshot skeleton_snapshot(const Sim& sim, const AssignmentTable<RuttingLaw>& table, int e,
-                                   const SkeletonCut& cut) {
+                                   const SkeletonCut& cut, const std::vector<int>& stone) {
   const auto& ps = sim.particles();
   const auto& cl = sim.contacts();
   auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.position);
   auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.radius);
   auto group = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.group);
-  auto body = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), ps.body);
   auto partner = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cl.partner);
   auto count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cl.count);
   auto load = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cl.load);
   const auto box = cl.box;  // the nearest image across a periodic axis
   const auto [first, last] = sim.specimen_range(e);
 
-  // Each body's centroid height: its members' mean (a stone's spheres share a
-  // size and a density, so that is its centre of mass).
-  std::vector<double> body_height, body_members;
+  // Each stone's centroid height: its particles' mean (they share a size and
+  // a density, so that is its centre of mass). A rigid stone is one body;
+  // the method's bonded stones (--exact-stones) are stones all the same.
+  std::vector<double> stone_height, stone_members;
   for (int i = first; i < last; ++i) {
-    const int b = body(i);
-    if (b < 0) continue;
-    if (b >= static_cast<int>(body_height.size())) body_height.resize(b + 1, 0.0), body_members.resize(b + 1, 0.0);
-    body_height[b] += x(i).y;
-    body_members[b] += 1.0;
+    const int a = stone[i - first];
+    if (a < 0) continue;
+    if (a >= static_cast<int>(stone_height.size())) stone_height.resize(a + 1, 0.0), stone_members.resize(a + 1, 0.0);
+    stone_height[a] += x(i).y;
+    stone_members[a] += 1.0;
   }
   auto above = [&](int i) {
-    const int b = body(i);
-    return (b >= 0 ? body_height[b] / body_members[b] : x(i).y) > cut.height;
+    const int a = stone[i - first];
+    return (a >= 0 ? stone_height[a] / stone_members[a] : x(i).y) > cut.height;
   };
 
   SkeletonSnapshot out;
@@ -102,22 +107,26 @@ SkeletonSnapshot skeleton_snapshot(const Sim& sim, const AssignmentTable<Rutting
       const auto d = box.separation(x(i), x(j));  // from i to j
       const double dist = norm(d);
       const double overlap = r(i) + r(j) - dist;
-      if (!(overlap > 0.0)) continue;
+      const auto force = load(i, k).force;  // on j
+      // A contact acts where it overlaps, or where a bond holds it across a
+      // gap (the mastic's bonds pull, and their Burger's history can push).
+      if (!(overlap > 0.0) && !(dot(force, force) > 0.0)) continue;
       const auto& p = table(group(i), group(j));
       const ContactClass c = classify_contact(p, group(i), group(j), overlap);
-      if (group(i) != mastic_group && group(j) != mastic_group && (body(i) < 0 || body(i) != body(j))) {
+      const int stone_i = stone[i - first], stone_j = stone[j - first];
+      if (stone_i >= 0 && stone_j >= 0 && stone_i != stone_j && overlap > 0.0) {
         const double t = film_thickness(p, cut.diameter);
         const int bin = std::min(film_census_bins - 1, std::max(0, static_cast<int>(std::lround(t / film_census_step))));
         ++out.films.contacts[bin];
         if (c == ContactClass::stone_spring) ++out.films.bearing[bin];
       }
       const bool i_above = above(i), j_above = above(j);
-      if (i_above == j_above) continue;
-      // The contact's point: the middle of the overlap on the line of centres.
+      if (i_above == j_above) continue;  // within one stone, or on one side
+      // The contact's point: the middle of the overlap (or gap) on the line of centres.
       const double point_x = x(i).x + (r(i) - 0.5 * overlap) / dist * d.x;
       if (point_x < cut.x0 || point_x > cut.x1) continue;
-      // load(i, k).force acts on j; the part above takes the force from below.
-      const double up = j_above ? load(i, k).force.y : -load(i, k).force.y;
+      // The part above takes the force from below.
+      const double up = j_above ? force.y : -force.y;
       if (c == ContactClass::stone_spring)
         out.load.stone_spring += up;
       else if (c == ContactClass::stone_film)
