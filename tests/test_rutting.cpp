@@ -59,6 +59,21 @@ void check_sane_and_pinned(const vrut::RuttingMaterials& materials, const vrut_t
   CHECK(std::isfinite(res.dynamic_stability));
   CHECK(res.dynamic_stability > 0.0);
   CHECK(res.snapshots.size() == 3);
+  // Which contacts set the step, worked by hand: with rigid stones, the
+  // mould and plate meet every disk on the stones' spring (ratio E1 t), and
+  // the lightest disk is a mastic one (2400 kg/m^3 against the stones' 2700):
+  // sqrt(m / k), m = rho pi r^2 t. The method's stones (no rigid bodies) are
+  // timed by their lightest disk on the stiffest spring, by no class.
+  if (materials.rigid_stones) {
+    const double t = vrut::WheelTracking{}.wheel_width, r = sp.disks.radius * 1e-3;
+    const double m = materials.mastic_density * std::acos(-1.0) * r * r * t;
+    const double k = materials.stone_contact_ratio * materials.mastic.E1 * t;
+    CHECK(res.time_step.set_by == "particle-wall");
+    CHECK(res.time_step.step == Approx(std::sqrt(m / k)).epsilon(1e-12));
+    CHECK(res.time_step.next_step > res.time_step.step);
+  } else {
+    CHECK_FALSE(res.time_step.known());
+  }
   // A guard, not a check of correctness (a regression pin): the values this
   // run gave when the model was frozen, bit for bit. Changing any default,
   // the specimen generator or any physics fails here, and must then be a

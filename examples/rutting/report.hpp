@@ -203,6 +203,14 @@ void add_shared_summary(nlohmann::json& j, const RunFacts& res, const RuttingRep
   j["stone_neighbours_per_stone"] = res.stones > 0 ? 2.0 * res.stone_pairs_touching / res.stones : 0.0;
   j["steps"] = res.steps;
   j["reduced_dt_s"] = res.dt;
+  // Which class of contact sets the step, and how far the next trails it
+  // (their sqrt(m / k), before the safety factor; rutting/timestep_report.hpp).
+  if (res.time_step.known())
+    j["time_step"] = {{"set_by", res.time_step.set_by},
+                      {"sqrt_m_over_k_s", res.time_step.step},
+                      {"next", res.time_step.next.empty() ? nlohmann::json(nullptr) : nlohmann::json(res.time_step.next)},
+                      {"next_over_set", res.time_step.next.empty() ? nlohmann::json(nullptr)
+                                                                   : nlohmann::json(res.time_step.next_step / res.time_step.step)}};
   const auto& summary = report.summary;
   j["deformation_45min_mm"] = summary.deformation_at_ds_start.mean;
   j["deformation_60min_mm"] = summary.deformation_final.mean;
@@ -280,7 +288,15 @@ void print_result(const std::string& what_was_run, const std::vector<vrut::Rutti
                   res.deformation_resolution * 1e3);
     std::printf(", as the standard reports it %s", standard_text(report.mean_curve).c_str());
   }
-  std::printf(" (%s%s)\nresults in %s\n", speed.c_str(), note.c_str(), out.c_str());
+  std::printf(" (%s%s)\n", speed.c_str(), note.c_str());
+  if (res.time_step.known()) {
+    std::printf("time step %.3g s (reduced), set by the %s contacts", res.dt, res.time_step.set_by.c_str());
+    if (!res.time_step.next.empty())
+      std::printf("; the next, %s, would allow %.2f times as long", res.time_step.next.c_str(),
+                  res.time_step.next_step / res.time_step.step);
+    std::printf("\n");
+  }
+  std::printf("results in %s\n", out.c_str());
 }
 
 }  // namespace

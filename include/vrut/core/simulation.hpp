@@ -338,6 +338,34 @@ class Simulation {
     return 1.0 / std::sqrt(worst);
   }
 
+  // contact_timestep's terms, each spring's own sqrt(m / k): for each two
+  // groups present (a <= b) and for the walls (a = b = -1). The step is the
+  // smallest; the others say how far each trails it. Empty without bodies
+  // (critical_timestep then takes the lightest particle on the stiffest spring).
+  struct SpringStep {
+    int group_a = -1, group_b = -1;
+    double step = 0.0;
+  };
+  std::vector<SpringStep> spring_steps() const {
+    std::vector<SpringStep> out;
+    if (bodies_.size() == 0) return out;
+    const int groups = static_cast<int>(std::lround(std::sqrt(static_cast<double>(pair_stiffness_.size()))));
+    auto lightest = [&](int g) {
+      return g < static_cast<int>(lightest_contact_mass_.size()) ? lightest_contact_mass_[g] : 0.0;
+    };
+    double mall = 0.0;
+    for (int a = 0; a < groups; ++a) {
+      if (!(lightest(a) > 0.0)) continue;
+      mall = mall > 0.0 ? std::min(mall, lightest(a)) : lightest(a);
+      for (int b = a; b < groups; ++b) {
+        const double k = pair_stiffness_[static_cast<std::size_t>(a) * groups + b];
+        if (lightest(b) > 0.0 && k > 0.0) out.push_back({a, b, 1.0 / std::sqrt(k / std::min(lightest(a), lightest(b)))});
+      }
+    }
+    if (wall_stiffness_ > 0.0 && mall > 0.0) out.push_back({-1, -1, 1.0 / std::sqrt(wall_stiffness_ / mall)});
+    return out;
+  }
+
   // --- rigid bodies ---------------------------------------------------------
   int body_count() const { return static_cast<int>(bodies_.size()); }
   bodies_type& bodies() { return bodies_; }

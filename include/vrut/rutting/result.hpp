@@ -3,6 +3,7 @@
 // and the rut depth and dynamic stability worked out from the curve.
 #include <vrut/rutting/skeleton_record.hpp>
 #include <vrut/rutting/test.hpp>
+#include <vrut/rutting/timestep_report.hpp>
 
 #include <cmath>
 #include <cstddef>
@@ -44,6 +45,7 @@ struct RuttingResult {
   bool interrupted = false;                // stopped early on request: the samples so far, no DS
   long steps = 0;
   double dt = 0.0, wall_seconds = 0.0;
+  TimestepReport time_step;  // which class of contact sets dt (before the safety factor), and the next
 
   // Stones touching per stone at the end: each touching pair counts for both.
   double stones_touching_per_stone() const {

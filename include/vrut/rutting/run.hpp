@@ -14,6 +14,7 @@
 #include <vrut/rutting/result.hpp>
 #include <vrut/rutting/skeleton.hpp>
 #include <vrut/rutting/test.hpp>
+#include <vrut/rutting/timestep_report.hpp>
 #include <vrut/servo/servo.hpp>
 #include <vrut/specimen/colouring.hpp>
 #include <vrut/specimen/specimen.hpp>
@@ -221,6 +222,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     sim.add_wall(Wall{{width, 0.0}, {width, 2.0 * height}, {}}, wall_law, {}, e);
   }
   const double dt = num.timestep_safety * sim.critical_timestep();
+  for (auto& res : results) res.time_step = timestep_report(sim, table);
 
   // Settling under gravity (a resumed run reads where it had got to instead).
   // The energy check (energy_check.hpp) counts the loads' work from here.

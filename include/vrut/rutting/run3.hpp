@@ -29,6 +29,7 @@
 #include <vrut/rutting/run.hpp>
 #include <vrut/rutting/skeleton.hpp>
 #include <vrut/rutting/test.hpp>
+#include <vrut/rutting/timestep_report.hpp>
 #include <vrut/servo/servo.hpp>
 #include <vrut/specimen/specimen3.hpp>
 #include <vrut/specimen/stone_reach3.hpp>
@@ -184,6 +185,7 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
     sim.add_wall(Wall3{{width, mid.y, mid.z}, {0.0, 0.0, endless}, {0.0, height, 0.0}, {}}, wall_law, {}, e);
   }
   const double dt = num.timestep_safety * sim.critical_timestep();
+  for (auto& o : out) o.result.time_step = timestep_report(sim, table);
 
   // Settling (a resumed run reads where it had got to instead); the energy
   // check counts the loads' work from here.
