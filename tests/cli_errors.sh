@@ -325,7 +325,9 @@ rutting)
   if [[ $code -ne 130 ]] || ! grep -q "partial results" "$work/intr.out" ||
      ! grep -q '"interrupted": true' "$work/intr/summary.json" 2>/dev/null ||
      [[ $(wc -l <"$work/intr/deformation.csv") -lt 3 ]] ||
-     [[ $(awk -F, 'NR > 1 && $(NF - 1) == "nan" && $NF == "nan"' "$work/intr/seeds.csv" | wc -l) -ne 2 ]]; then
+     [[ $(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+                   $col["ds_standard_passes_per_mm"] == "nan" && $col["ds_standard_censored"] == "nan"' \
+          "$work/intr/seeds.csv" | wc -l) -ne 2 ]]; then
     echo "FAIL: Ctrl-C gave exit $code and no partial results:"; cat "$work/intr.out" "$work/intr.err" | tail -n 5
     failures=$((failures + 1))
   else

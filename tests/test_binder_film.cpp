@@ -21,7 +21,7 @@ TEST_CASE("the binder film of 2#, worked by hand with MS-2's surface area factor
   CHECK(f.thickness_um == Approx(7.876).epsilon(2e-4));
 }
 
-TEST_CASE("the binder film: fewer fines, a thicker film; a table's own fine sieves are used", "[unit][binder_film]") {
+TEST_CASE("the binder film: fewer fines, a thicker film, and a table's own fine sieves used", "[unit][binder_film]") {
   const vrut::MixVolumetrics mix;
   const double t1 = vrut::binder_film(vrut::builtin_gradation(1), mix).thickness_um;
   const double t2 = vrut::binder_film(vrut::builtin_gradation(2), mix).thickness_um;
