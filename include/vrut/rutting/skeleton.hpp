@@ -82,7 +82,9 @@ SkeletonSnapshot skeleton_snapshot(const Sim& sim, const AssignmentTable<Rutting
   auto count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cl.count);
   auto load = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cl.load);
   const auto box = cl.box;  // the nearest image across a periodic axis
-  const auto [first, last] = sim.specimen_range(e);
+  // Not a structured binding: the lambda below uses `first` (C++17 lets no lambda capture one).
+  const auto range = sim.specimen_range(e);
+  const int first = range.first, last = range.second;
 
   // Each stone's centroid height: its particles' mean (they share a size and
   // a density, so that is its centre of mass). A rigid stone is one body;
