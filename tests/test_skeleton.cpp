@@ -71,6 +71,31 @@ Columns three_columns() {
   return c;
 }
 
+// The cut between the columns' second and third particles, over all three.
+vrut::SkeletonCut cut_across_columns() {
+  vrut::SkeletonCut cut;
+  cut.height = 4.0 * r;
+  cut.x0 = 0.0;
+  cut.x1 = 40e-3;
+  cut.diameter = 2.0 * r;
+  return cut;
+}
+
+// What each column passes across the cut at rest, to within 1e-8 of its
+// weight (1e-10 seen: the damped columns ring down in a few thousand steps
+// of the 40,000); and the stones' films: A's one contact between two
+// stones bears at once (no film), B's three lie on films of 0.4 diameters
+// and do not bear.
+void check_columns_weights(const vrut::SkeletonSnapshot& all, const Columns& c) {
+  CHECK(all.load.stone_spring == Approx(3.0 * c.m_stone * g).epsilon(1e-8));
+  CHECK(all.load.stone_film == Approx(2.0 * c.m_stone * g).epsilon(1e-8));
+  CHECK(all.load.mastic == Approx(2.0 * c.m_mastic * g).epsilon(1e-8));
+  CHECK(all.films.contacts[0] == 1);
+  CHECK(all.films.bearing[0] == 1);
+  CHECK(all.films.contacts[2] == 3);
+  CHECK(all.films.bearing[2] == 0);
+}
+
 }  // namespace
 
 TEMPLATE_LIST_TEST_CASE("the load path across a cut: three columns at rest, worked by hand", "[physics][skeleton]",
@@ -88,26 +113,12 @@ TEMPLATE_LIST_TEST_CASE("the load path across a cut: three columns at rest, work
   const double dt = 0.3 * sim.critical_timestep();
   sim.run(40000, dt);
 
-  vrut::SkeletonCut cut;
-  cut.height = 4.0 * r;
-  cut.x0 = 0.0;
-  cut.x1 = 40e-3;
-  cut.diameter = 2.0 * r;
+  vrut::SkeletonCut cut = cut_across_columns();
   const vrut::SkeletonSnapshot all = vrut::skeleton_snapshot(sim, c.table, 0, cut, c.stone);
-  // At rest to within 1e-8 of each weight (1e-10 seen): the damped columns ring
-  // down in a few thousand steps of the 40,000.
-  CHECK(all.load.stone_spring == Approx(3.0 * c.m_stone * g).epsilon(1e-8));
-  CHECK(all.load.stone_film == Approx(2.0 * c.m_stone * g).epsilon(1e-8));
-  CHECK(all.load.mastic == Approx(2.0 * c.m_mastic * g).epsilon(1e-8));
+  check_columns_weights(all, c);
   const double total = 5.0 * c.m_stone + 2.0 * c.m_mastic;
   CHECK(all.load.share(all.load.stone_spring) == Approx(3.0 * c.m_stone / total).epsilon(1e-8));
 
-  // The stones' films: A's one contact between two stones bears at once
-  // (no film); B's three lie on films of 0.4 diameters and do not bear.
-  CHECK(all.films.contacts[0] == 1);
-  CHECK(all.films.bearing[0] == 1);
-  CHECK(all.films.contacts[2] == 3);
-  CHECK(all.films.bearing[2] == 0);
   CHECK(all.films.total_contacts() == 4);
 
   // Under a plate over column C alone only the mastic carries the load.
@@ -162,17 +173,7 @@ TEMPLATE_LIST_TEST_CASE("3D: the load path across a cut, the same three columns 
                vrut::rutting_wall_params(m, t), {}, 0);
   sim.run(40000, 0.3 * sim.critical_timestep());
 
-  vrut::SkeletonCut cut;
-  cut.height = 4.0 * r;
-  cut.x0 = 0.0;
-  cut.x1 = 40e-3;
-  cut.diameter = 2.0 * r;
+  vrut::SkeletonCut cut = cut_across_columns();
   const vrut::SkeletonSnapshot all = vrut::skeleton_snapshot(sim, c.table, 0, cut, c.stone);
-  CHECK(all.load.stone_spring == Approx(3.0 * c.m_stone * g).epsilon(1e-8));
-  CHECK(all.load.stone_film == Approx(2.0 * c.m_stone * g).epsilon(1e-8));
-  CHECK(all.load.mastic == Approx(2.0 * c.m_mastic * g).epsilon(1e-8));
-  CHECK(all.films.contacts[0] == 1);
-  CHECK(all.films.bearing[0] == 1);
-  CHECK(all.films.contacts[2] == 3);
-  CHECK(all.films.bearing[2] == 0);
+  check_columns_weights(all, c);
 }
