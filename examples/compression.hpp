@@ -2,7 +2,7 @@
 // The demonstration job: a bonded hex-packed block of disks compressed by a
 // servo-controlled plate to a target stress. Generic in the contact law, so a
 // user-written law plugs in (see custom_law/).
-#include "common/cli.hpp"
+#include <vrut/app/cli.hpp>
 
 #include <vrut/backend.hpp>
 #include <vrut/io/output_dir.hpp>
@@ -54,7 +54,7 @@ inline int parse(int argc, char** argv, Options& opts, const std::string& descri
   app.add_option("--steps", opts.steps, "time steps")->check(CLI::Range(1L, 100000000L))->capture_default_str();
   app.add_option("--out", opts.out, "output folder")->capture_default_str();
   app.add_flag("--force", opts.force, "overwrite an existing output folder");
-  return cli::parse(app, argc, argv);
+  return vrut::app::cli::parse(app, argc, argv);
 }
 
 // Material constants of the demonstration block (aggregate-like disks).
@@ -121,7 +121,7 @@ nlohmann::json compress(const Options& o, const vrut::AssignmentTable<Law>& tabl
 // Everything main does after parsing: output folder check, Kokkos, dispatch.
 template <class Law, class MakeTable>
 int run(const Options& o, const Material& mat, MakeTable make_table, const std::string& law_name) {
-  return cli::guarded([&] {
+  return vrut::app::cli::guarded([&] {
     vrut::OutputDir dir(o.out, o.force);
     vrut::KokkosSession kokkos(o.threads);
     const vrut::AssignmentTable<Law> table = make_table();

@@ -1,142 +1,20 @@
 // vrut-creep: virtual uniaxial creep test of an all-mastic, bonded, hex-packed
-// block under a constant plate stress, against the macro Burger's model.
-#include "common/cli.hpp"
-#include <vrut/backend.hpp>
-#include <vrut/io/output_dir.hpp>
-#include <vrut/io/plot.hpp>
-#include <vrut/io/progress.hpp>
-#include <vrut/material/burgers_fit.hpp>
-#include <vrut/protocol/creep.hpp>
+// block under a constant plate stress, against the macro Burger's model. The
+// test, its options and outputs: include/vrut/app/creep_run.hpp (the Python
+// module's vrut.creep runs the same).
+#include <vrut/app/cli.hpp>
+#include <vrut/app/creep_run.hpp>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <iostream>
 
 int main(int argc, char** argv) {
-  vrut::CreepSettings cs;
-  std::string backend = "openmp", out = "out/creep", conversion = "seed";
-  int threads = 0;
-  bool force = false;
-  double radius_mm = cs.radius * 1e3, thickness_mm = cs.thickness * 1e3, stress_mpa = cs.stress * 1e-6;
-  double e1 = cs.macro.E1 * 1e-6, eta1 = cs.macro.eta1 * 1e-6, e2 = cs.macro.E2 * 1e-6, eta2 = cs.macro.eta2 * 1e-6;
-
+  vrut::app::CreepOptions o;
   CLI::App app("vrut-creep: virtual uniaxial creep test of a bonded all-mastic block (Burger's contacts)");
-  app.add_option("--backend", backend, "Kokkos backend")->check(CLI::IsMember(vrut::available_backends()))
-      ->capture_default_str();
-  app.add_option("--threads", threads, "host threads (0: OMP_NUM_THREADS)")->check(CLI::Range(0, 1024));
-  app.add_option("--columns", cs.columns, "disks per row")->check(CLI::Range(2, 2000))->capture_default_str();
-  app.add_option("--rows", cs.rows, "rows of disks")->check(CLI::Range(2, 2000))->capture_default_str();
-  app.add_option("--radius-mm", radius_mm, "disk radius, mm")->check(cli::finite_positive())->capture_default_str();
-  app.add_option("--thickness-mm", thickness_mm, "disk width t, mm")->check(cli::finite_positive())->capture_default_str();
-  app.add_option("--density", cs.density, "mastic density, kg/m^3")->check(cli::finite_positive())->capture_default_str();
-  app.add_option("--stress-mpa", stress_mpa, "plate stress sigma0, MPa")->check(cli::finite_positive())
-      ->capture_default_str();
-  app.add_option("--time-s", cs.duration, "loading time, s (real; reduced by the shift factor)")
-      ->check(cli::finite_positive())->capture_default_str();
-  app.add_option("--shift", cs.shift, "time-temperature shift factor alpha_T")->capture_default_str();
-  app.add_option("--E1", e1, "Maxwell modulus, MPa")->check(cli::finite_positive())->capture_default_str();
-  app.add_option("--eta1", eta1, "Maxwell viscosity, MPa s")->check(cli::finite_positive())->capture_default_str();
-  app.add_option("--E2", e2, "Kelvin modulus, MPa")->check(cli::finite_positive())->capture_default_str();
-  app.add_option("--eta2", eta2, "Kelvin viscosity, MPa s")->check(cli::finite_positive())->capture_default_str();
-  app.add_option("--nu", cs.nu, "Poisson's ratio of the mastic, [0, 0.5)")->check(cli::finite_range(0.0, 0.5, true))
-      ->capture_default_str();
-  app.add_option("--conversion", conversion, "macro-to-micro rules: seed (method.md) or calibrated")
-      ->check(CLI::IsMember({"seed", "calibrated"}))->capture_default_str();
-  app.add_option("--damping", cs.damping, "local damping coefficient")->check(cli::finite_range(0.0, 0.99))
-      ->capture_default_str();
-  app.add_option("--points", cs.points, "samples written")->check(CLI::Range(2, 100000))->capture_default_str();
-  app.add_option("--out", out, "output folder")->capture_default_str();
-  app.add_flag("--force", force, "overwrite an existing output folder");
-  if (const int code = cli::parse(app, argc, argv); code >= 0) return code;
-
-  return cli::guarded([&] {
-    cs.radius = radius_mm * 1e-3;
-    cs.thickness = thickness_mm * 1e-3;
-    cs.stress = stress_mpa * 1e6;
-    cs.macro = {e1 * 1e6, eta1 * 1e6, e2 * 1e6, eta2 * 1e6};
-    try {
-      cs.validate();
-      cs.conversion = conversion == "seed" ? vrut::MicroConversion::seed() : vrut::MicroConversion::calibrated(cs.nu);
-    } catch (const std::invalid_argument& e) {
-      std::cerr << "error: " << e.what() << '\n';
-      return 2;
-    }
-    const double final_macro_strain = cs.macro.creep_strain(cs.stress, cs.duration);
-    if (final_macro_strain > 0.2)
-      std::cerr << "warning: the macro model creeps to a strain of " << final_macro_strain
-                << "; a DEM block cannot follow that far (compare at a lower --stress-mpa, e.g. 0.01)\n";
-
-    vrut::OutputDir dir(out, force);
-    vrut::KokkosSession kokkos(threads);
-    int used_threads = 1;
-    // Reported in permille of the test; read as seconds of the (real) loading a second.
-    vrut::ProgressBar bar("creep", 1000, {"test s", cs.duration / 1000.0});
-    const vrut::CreepResult res = vrut::dispatch_backend(backend, [&](auto space) {
-      used_threads = vrut::concurrency(space);
-      return vrut::run_creep(cs, space, [&](long done, long total) { bar.update(done * 1000 / total); });
-    });
-    bar.finish();
-
-    std::vector<double> t, eps_virtual, eps_macro;
-    double worst = 0.0;
-    std::ofstream csv(dir.file("creep.csv"));
-    csv << "time_s,reduced_time_s,strain_virtual,strain_analytic,plate_stress_mpa\n";
-    for (const auto& s : res.samples) {
-      csv << s.time << ',' << s.reduced_time << ',' << s.strain_virtual << ',' << s.strain_analytic << ',' << s.plate_stress * 1e-6 << '\n';
-      t.push_back(s.time);
-      eps_virtual.push_back(s.strain_virtual);
-      eps_macro.push_back(s.strain_analytic);
-      worst = std::max(worst, std::abs(s.strain_virtual / s.strain_analytic - 1.0));
-    }
-    csv.close();
-    const vrut::BurgersFit fit = vrut::fit_burgers(t, eps_virtual, cs.stress);
-
-    nlohmann::json j;
-    j["backend"] = backend;
-    j["threads"] = used_threads;
-    j["conversion"] = conversion;
-    j["conversion_factors"] = {{"maxwell_stiffness", cs.conversion.maxwell_stiffness},
-                               {"maxwell_viscosity", cs.conversion.maxwell_viscosity},
-                               {"kelvin_stiffness", cs.conversion.kelvin_stiffness},
-                               {"kelvin_viscosity", cs.conversion.kelvin_viscosity}};
-    j["specimen"] = {{"columns", cs.columns}, {"rows", cs.rows}, {"radius_mm", radius_mm},
-                     {"thickness_mm", thickness_mm}, {"density", cs.density}, {"nu", cs.nu}};
-    j["stress_mpa"] = stress_mpa;
-    j["time_s"] = cs.duration;
-    j["shift_factor"] = cs.shift;
-    j["macro"] = {{"E1_mpa", e1}, {"eta1_mpa_s", eta1}, {"E2_mpa", e2}, {"eta2_mpa_s", eta2}};
-    j["apparent"] = {{"E1_mpa", fit.macro.E1 * 1e-6}, {"eta1_mpa_s", fit.macro.eta1 * 1e-6},
-                     {"E2_mpa", fit.macro.E2 * 1e-6}, {"eta2_mpa_s", fit.macro.eta2 * 1e-6},
-                     {"rms_strain_residual", fit.rms_residual}};
-    j["ratio_apparent_to_macro"] = {{"E1", fit.macro.E1 / cs.macro.E1}, {"eta1", fit.macro.eta1 / cs.macro.eta1},
-                                    {"E2", fit.macro.E2 / cs.macro.E2}, {"eta2", fit.macro.eta2 / cs.macro.eta2}};
-    j["max_relative_deviation"] = worst;
-    j["particles"] = res.particles;
-    j["steps"] = res.steps;
-    j["reduced_dt_s"] = res.dt;
-    j["wall_seconds"] = res.wall_seconds;
-    j["particle_steps_per_second"] = res.particles * static_cast<double>(res.steps) / res.wall_seconds;
-    std::ofstream(dir.file("creep.json")) << j.dump(2) << '\n';
-
-    vrut::PlotSpec spec;
-    spec.title = "Creep at " + std::to_string(stress_mpa).substr(0, 6) + " MPa, " + conversion + " conversion";
-    spec.xlabel = "time (s, unshifted)";
-    spec.ylabel = "strain";
-    vrut::write_plot_png(dir.file("creep.png").string(), spec,
-                         {{"virtual (DEM)", t, eps_virtual, "lines lw 2"},
-                          {"macro Burger's model", t, eps_macro, "lines lw 2 dt 2"}});
-    dir.commit();
-    std::printf("apparent/macro: E1 %.4f  eta1 %.4f  E2 %.4f  eta2 %.4f; worst deviation from macro %.2f %%\n",
-                j["ratio_apparent_to_macro"]["E1"].get<double>(), j["ratio_apparent_to_macro"]["eta1"].get<double>(),
-                j["ratio_apparent_to_macro"]["E2"].get<double>(), j["ratio_apparent_to_macro"]["eta2"].get<double>(),
-                100.0 * worst);
-    std::printf("%zu disks, %ld steps, %.1f s; results in %s\n", res.particles, res.steps, res.wall_seconds,
-                out.c_str());
+  vrut::app::add_creep_options(app, o);
+  if (const int code = vrut::app::cli::parse(app, argc, argv); code >= 0) return code;
+  return vrut::app::cli::guarded([&] {
+    if (o.out.empty()) throw std::invalid_argument("--out: the output folder, not empty");
+    vrut::app::run_creep_app(o);
     return 0;
   });
 }

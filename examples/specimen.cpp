@@ -2,12 +2,12 @@
 // makes one from an image of a section (--image), and writes its picture,
 // its statistics and a VTK file of the disks; with --dim 3 a 3D specimen
 // (polyhedral stones, spheres), its pictures at mid-depth and from above.
-#include "common/cli.hpp"
-#include "common/draw.hpp"
-#include "common/draw3.hpp"
-#include "common/image_cli.hpp"
-#include "common/specimen3_cli.hpp"
-#include "common/specimen_cli.hpp"
+#include <vrut/app/cli.hpp>
+#include <vrut/app/draw.hpp>
+#include <vrut/app/draw3.hpp>
+#include <vrut/app/image_cli.hpp>
+#include <vrut/app/specimen3_cli.hpp>
+#include <vrut/app/specimen_cli.hpp>
 
 #include <vrut/io/memory_check.hpp>
 #include <vrut/io/progress.hpp>
@@ -24,6 +24,8 @@
 #include <iostream>
 #include <memory>
 #include <thread>
+
+using namespace vrut::app;  // the command line's shared options and outputs (cli, draw, specimen_cli, ...)
 
 int main(int argc, char** argv) {
   using namespace specimen_cli;

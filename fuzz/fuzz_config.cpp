@@ -2,7 +2,7 @@
 // `--config` uses it) with vrut's specimen options and their checks, then the
 // settings and stereology they lead to. Bad input must end in a CLI11 parse
 // error or std::invalid_argument, never in a crash. See docs/fuzzing.md.
-#include "../examples/common/specimen_cli.hpp"
+#include <vrut/app/specimen_cli.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -11,6 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+
+using namespace vrut::app;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   specimen_cli::SpecimenOptions options;

@@ -43,28 +43,42 @@ decltype(auto) dispatch_backend(const std::string& name, F&& f) {
   throw std::invalid_argument("unknown backend '" + name + "' (this build has: " + known + ")");
 }
 
-// Initialises Kokkos for the lifetime of the object; threads <= 0 leaves the
-// choice to Kokkos (OMP_NUM_THREADS).
+// Starts the Kokkos runtime; threads <= 0 leaves the choice to Kokkos
+// (OMP_NUM_THREADS).
+inline void initialize_kokkos(int threads) {
+  // Kokkos 3 warns when OMP_PROC_BIND is unset. The OpenMP runtime has read
+  // its environment already, so this only quiets the warning; the runtime's
+  // default (no binding) stays.
+  ::setenv("OMP_PROC_BIND", "false", 0);
+#if KOKKOS_VERSION >= 30700
+  Kokkos::InitializationSettings settings;
+  if (threads > 0) settings.set_num_threads(threads);
+  Kokkos::initialize(settings);
+#else
+  Kokkos::InitArguments args;
+  if (threads > 0) args.num_threads = threads;
+  Kokkos::initialize(args);
+#endif
+}
+
+// Kokkos for the lifetime of the object, unless it runs already (the Python
+// module keeps one runtime for its process): then this session neither
+// starts nor ends it.
 class KokkosSession {
  public:
   explicit KokkosSession(int threads = 0) {
-    // Kokkos 3 warns when OMP_PROC_BIND is unset. The OpenMP runtime has read
-    // its environment already, so this only quiets the warning; the runtime's
-    // default (no binding) stays.
-    ::setenv("OMP_PROC_BIND", "false", 0);
-#if KOKKOS_VERSION >= 30700
-    Kokkos::InitializationSettings settings;
-    if (threads > 0) settings.set_num_threads(threads);
-    Kokkos::initialize(settings);
-#else
-    Kokkos::InitArguments args;
-    if (threads > 0) args.num_threads = threads;
-    Kokkos::initialize(args);
-#endif
+    if (Kokkos::is_initialized()) return;
+    owner_ = true;
+    initialize_kokkos(threads);
   }
-  ~KokkosSession() { Kokkos::finalize(); }
+  ~KokkosSession() {
+    if (owner_) Kokkos::finalize();
+  }
   KokkosSession(const KokkosSession&) = delete;
   KokkosSession& operator=(const KokkosSession&) = delete;
+
+ private:
+  bool owner_ = false;
 };
 
 template <class Space>

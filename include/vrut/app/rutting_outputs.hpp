@@ -1,7 +1,7 @@
 #pragma once
 // vrut-rutting's pictures and files: the rut forming, the displacement
 // field, the final state for ParaView, and the JSON forms of its numbers.
-#include "../common/draw.hpp"
+#include "draw.hpp"
 
 #include <vrut/analysis/standard_ds.hpp>
 #include <vrut/analysis/statistics.hpp>
@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace vrut::app {
 
 // The deformed specimen at one moment: disks where they are, stones and
 // mastic in their colours, the plate in red.
-void snapshot_panel(draw::Canvas& c, const vrut::Specimen& sp, const vrut::RuttingSnapshot& s, double y_offset_mm,
+inline void snapshot_panel(draw::Canvas& c, const vrut::Specimen& sp, const vrut::RuttingSnapshot& s, double y_offset_mm,
                     const vrut::RuttingResult& res, double plate_y_mm) {
   const double r = sp.disks.radius;
   for (std::size_t i = 0; i < s.x.size(); ++i) {
@@ -31,7 +31,7 @@ void snapshot_panel(draw::Canvas& c, const vrut::Specimen& sp, const vrut::Rutti
 }
 
 // rut_forming.png: the specimen at 20, 40 and 60 min.
-void rut_forming_png(const vrut::Specimen& sp, const vrut::RuttingResult& res, double test_minutes,
+inline void rut_forming_png(const vrut::Specimen& sp, const vrut::RuttingResult& res, double test_minutes,
                      const std::string& path) {
   const double W = sp.width, H = sp.height;
   const double panel = H + 12.0;  // a strip for the label above each panel
@@ -55,7 +55,7 @@ void rut_forming_png(const vrut::Specimen& sp, const vrut::RuttingResult& res, d
 }
 
 // displacement.png: the displacement field at the end, colour and arrows.
-void displacement_png(const vrut::Specimen& sp, const vrut::RuttingResult& res, const std::string& path) {
+inline void displacement_png(const vrut::Specimen& sp, const vrut::RuttingResult& res, const std::string& path) {
   const double W = sp.width, H = sp.height;
   const auto& end = res.snapshots.back();
   draw::Canvas c(W, H + 12.0, 6.0);
@@ -74,7 +74,7 @@ void displacement_png(const vrut::Specimen& sp, const vrut::RuttingResult& res, 
 }
 
 // final.vtk: final positions, displacement, velocity, group.
-void final_vtk(const vrut::Specimen& sp, const vrut::RuttingResult& res, const std::string& path) {
+inline void final_vtk(const vrut::Specimen& sp, const vrut::RuttingResult& res, const std::string& path) {
   const auto& end = res.snapshots.back();
   std::vector<double> group(res.group.begin(), res.group.end()), radius(end.x.size(), sp.disks.radius * 1e-3);
   std::vector<std::pair<double, double>> disp, vel;
@@ -90,11 +90,11 @@ void final_vtk(const vrut::Specimen& sp, const vrut::RuttingResult& res, const s
 
 // A DS as the standard reports it (analysis/standard_ds.hpp): the value, and
 // whether it is only a lower bound ("> 6000", or our "above N").
-nlohmann::json standard_ds_json(const vrut::ReportedDS& d) {
+inline nlohmann::json standard_ds_json(const vrut::ReportedDS& d) {
   return {{"passes_per_mm", d.value}, {"censored", d.censored}};
 }
 
-nlohmann::json statistics_json(const vrut::SampleStatistics& s) {
+inline nlohmann::json statistics_json(const vrut::SampleStatistics& s) {
   nlohmann::json j;
   j["n"] = s.n;
   j["mean"] = s.mean;
@@ -107,4 +107,4 @@ nlohmann::json statistics_json(const vrut::SampleStatistics& s) {
   return j;
 }
 
-}  // namespace
+}  // namespace vrut::app

@@ -34,7 +34,7 @@ inline Specimen specimen_from_image(const std::string& path, const ImageSettings
 }  // namespace vrut
 #endif
 
-namespace image_cli {
+namespace vrut::app::image_cli {
 
 struct ImageOptions {
   std::vector<std::string> images;
@@ -195,4 +195,4 @@ inline nlohmann::json image_summary(const vrut::SegmentedImage& seg, const vrut:
 
 #endif  // VRUT_NO_IMAGES
 
-}  // namespace image_cli
+}  // namespace vrut::app::image_cli

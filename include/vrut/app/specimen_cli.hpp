@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace specimen_cli {
+namespace vrut::app::specimen_cli {
 
 struct SpecimenOptions {
   std::string gradation = "2";
@@ -133,4 +133,4 @@ inline void write_specimen_vtk(const vrut::Specimen& sp, const std::string& path
   vrut::write_vtk_disks(path, "vrut specimen (mm); group 0 mastic, 1 aggregate", x, y, data);
 }
 
-}  // namespace specimen_cli
+}  // namespace vrut::app::specimen_cli

@@ -1,11 +1,11 @@
 #pragma once
 // vrut-rutting's options: every option of a run, the command line that sets
 // them, and the options of a run resumed from its checkpoint.
-#include "../common/cli.hpp"
-#include "../common/image_cli.hpp"
-#include "../common/seeds.hpp"
-#include "../common/specimen3_cli.hpp"
-#include "../common/specimen_cli.hpp"
+#include "cli.hpp"
+#include "image_cli.hpp"
+#include "seeds.hpp"
+#include "specimen3_cli.hpp"
+#include "specimen_cli.hpp"
 
 #include <vrut/backend.hpp>
 #include <vrut/io/checkpoint.hpp>
@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace vrut::app {
 
 // Every option of a run: parsed from the command line, or on --resume from
 // the arguments the checkpoint stored.
@@ -85,9 +85,9 @@ inline double least_film_m(const std::string& text, const vrut::Gradation& g, co
 }
 
 // Options that a resumed run may change: where and how fast it runs, not what.
-const std::vector<std::string> resumable_options = {"--backend", "--threads", "--checkpoint-every"};
+inline const std::vector<std::string> resumable_options = {"--backend", "--threads", "--checkpoint-every"};
 
-void add_run_options(CLI::App& app, RunOptions& o) {
+inline void add_run_options(CLI::App& app, RunOptions& o) {
   using namespace specimen_cli;
   auto& mat = o.mat;
   auto& wt = o.wt;
@@ -200,7 +200,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
 // The checkpoint's options, parsed as they were, with the resumable ones
 // taken from this command line. A run whose --config file has changed since
 // is refused: it would not be the same run.
-RunOptions options_to_resume(const CLI::App& command_line, const RunOptions& given, const vrut::CheckpointFile& file) {
+inline RunOptions options_to_resume(const CLI::App& command_line, const RunOptions& given, const vrut::CheckpointFile& file) {
   for (const CLI::Option* opt : command_line.get_options())
     if (opt->count() > 0 && opt->get_name() != "--resume" &&
         std::find(resumable_options.begin(), resumable_options.end(), opt->get_name()) == resumable_options.end())
@@ -233,4 +233,4 @@ RunOptions options_to_resume(const CLI::App& command_line, const RunOptions& giv
   return o;
 }
 
-}  // namespace
+}  // namespace vrut::app

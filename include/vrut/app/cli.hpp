@@ -7,7 +7,7 @@
 #include <iostream>
 #include <stdexcept>
 
-namespace cli {
+namespace vrut::app::cli {
 
 // CLI11's PositiveNumber and Range let NaN through (every comparison with it
 // is false), and PositiveNumber infinity too: these refuse both. CLI11 puts
@@ -66,4 +66,4 @@ int guarded(Body&& body) {
   }
 }
 
-}  // namespace cli
+}  // namespace vrut::app::cli

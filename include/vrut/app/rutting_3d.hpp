@@ -3,13 +3,14 @@
 // ensemble (--seeds), with checkpoints and --resume, and its outputs. What
 // 3D does not have (images, the method's bonded stones, the mean film, the
 // 2D conversions, MPI) is refused by name.
-#include "../common/cli.hpp"
-#include "../common/draw3.hpp"
-#include "../common/seeds.hpp"
-#include "../common/specimen3_cli.hpp"
-#include "options.hpp"
-#include "outputs.hpp"
-#include "report.hpp"
+#include "cli.hpp"
+#include "draw3.hpp"
+#include "seeds.hpp"
+#include "specimen3_cli.hpp"
+#include "rutting_options.hpp"
+#include "rutting_outcome.hpp"
+#include "rutting_outputs.hpp"
+#include "rutting_report.hpp"
 #include "settling_bar.hpp"
 #include "stop_signal.hpp"
 
@@ -36,10 +37,10 @@
 #include <utility>
 #include <vector>
 
-namespace {
+namespace vrut::app {
 
 // The first specimen's final state for ParaView.
-void final_vtk3(const vrut::Specimen3& sp, const vrut::RuttingResult3& run, const std::string& path) {
+inline void final_vtk3(const vrut::Specimen3& sp, const vrut::RuttingResult3& run, const std::string& path) {
   std::vector<double> x, y, z, radius, group, stone, dx, dy, dz;
   for (std::size_t i = 0; i < run.final_positions.size(); ++i) {
     x.push_back(run.final_positions[i].x());
@@ -59,9 +60,12 @@ void final_vtk3(const vrut::Specimen3& sp, const vrut::RuttingResult3& run, cons
 }
 
 // o: the options as given, or as the checkpoint stored them on --resume;
-// checkpoint: where this run's checkpoints go (or whence it resumes);
-// config_text: config.ini.
-int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::string& config_text) {
+// checkpoint: where this run's checkpoints go (or whence it resumes), or
+// nullptr for none; config_text: config.ini. With o.out empty nothing is
+// written (the Python module's default). Errors throw: std::invalid_argument
+// for bad input, std::runtime_error where a specimen cannot be made.
+inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpoint, const std::string& config_text,
+                                     const RuttingHooks& hooks = {}) {
   namespace fs = std::filesystem;
   // By value, not by what was typed: a config file (config.ini) holds every option.
   const RunOptions defaults;
@@ -101,11 +105,12 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
                          ss.placement.height * ss.placement.depth;
   // Measured: about 2 kB a sphere in the run (95k spheres).
   vrut::require_memory(spheres * seeds.size(), 3072.0, 64e6, ensemble ? "this 3D ensemble" : "this 3D run");
-  vrut::OutputDir output(o.out, o.force);
-  output.write_text("config.ini", config_text);
+  std::optional<vrut::OutputDir> output;
+  if (!o.out.empty()) output.emplace(o.out, o.force);
+  if (output) output->write_text("config.ini", config_text);
   // The results, and two checkpoints (the old one stays until the new one
   // is whole) of about 2.5 kB a sphere.
-  output.require_space(4'000'000 + 400 * static_cast<std::size_t>(spheres) +
+  if (output) output->require_space(4'000'000 + 400 * static_cast<std::size_t>(spheres) +
                        2 * 2'500 * static_cast<std::size_t>(spheres * seeds.size()));
 
   // The stones go into the checkpoint's header: a resumed run takes them
@@ -113,7 +118,9 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   // takes about 18 minutes to place). Checkpoints written before they were
   // kept have none: those runs place their stones again, the same stones.
   const nlohmann::json* stones_kept =
-      checkpoint.resuming() && checkpoint.header().contains("stones3") ? &checkpoint.header().at("stones3") : nullptr;
+      checkpoint != nullptr && checkpoint->resuming() && checkpoint->header().contains("stones3")
+          ? &checkpoint->header().at("stones3")
+          : nullptr;
   nlohmann::json stones_to_keep = nlohmann::json::object();
   // Kokkos first: an ensemble places its specimens on as many host threads
   // as the run has.
@@ -124,10 +131,10 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
       ss.seed = seed;
       const std::string key = std::to_string(seed);
       if (!stones_kept->contains(key))
-        throw vrut::CheckpointError(checkpoint.path().string() + " keeps no stones for seed " + key +
+        throw vrut::CheckpointError(checkpoint->path().string() + " keeps no stones for seed " + key +
                                     ": it is of another run");
       specimens.push_back(vrut::specimen3_on_stones(
-          ss, vrut::placement_from_stones3_state(stones_kept->at(key), checkpoint.path().string())));
+          ss, vrut::placement_from_stones3_state(stones_kept->at(key), checkpoint->path().string())));
       std::fprintf(stderr, "seed %s: the stones placed when the run began, from the checkpoint\n", key.c_str());
     }
   } else {
@@ -141,13 +148,12 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
         specimens.push_back(specimen_cli::generate_specimen3_showing_progress(alone, "placing stones"));
       }
     } catch (const std::runtime_error& e) {  // the stones' fraction could not be reached
-      std::cerr << "error: " << (ensemble ? "" : "seed " + std::to_string(ss.seed) + ": ") << e.what() << '\n';
-      return 1;
+      throw std::runtime_error((ensemble ? "" : "seed " + std::to_string(ss.seed) + ": ") + e.what());
     }
     for (std::size_t e = 0; e < seeds.size(); ++e)
       stones_to_keep[std::to_string(seeds[e])] = vrut::stones3_state(specimens[e].placement);
   }
-  if (stones_kept == nullptr) checkpoint.add_to_header("stones3", std::move(stones_to_keep));
+  if (stones_kept == nullptr && checkpoint != nullptr) checkpoint->add_to_header("stones3", std::move(stones_to_keep));
   const vrut::Specimen3& sp = specimens.front();
   std::size_t all_spheres = 0;
   for (const auto& one : specimens) all_spheres += one.spheres.centers.size();
@@ -160,7 +166,8 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   // Reported in permille of the test; read as minutes of the test a second.
   vrut::ProgressBar bar(ensemble ? "loading " + cli::specimens_text(seeds.size()) : "loading", 1000,
                         {"test min", wt.minutes / 1000.0});
-  if (checkpoint.resuming()) std::fprintf(stderr, "resuming from %s\n", checkpoint.path().c_str());
+  if (checkpoint != nullptr && checkpoint->resuming())
+    std::fprintf(stderr, "resuming from %s\n", checkpoint->path().c_str());
   std::vector<vrut::RuttingResult3> runs3;
   {
     CatchStopSignals catching;
@@ -169,13 +176,17 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
       runs3 = vrut::dispatch_backend(o.backend, [&](auto space) {
         used_threads = vrut::concurrency(space);
         return vrut::run_rutting_ensemble3(
-            specimens, wt, mat, num, space, [&](double fraction, long) { bar.update(static_cast<long>(1000 * fraction)); },
-            [&] { return stop_signal != 0; }, &checkpoint, [&](long done, long steps) { settling(done, steps); });
+            specimens, wt, mat, num, space,
+            [&](double fraction, long) {
+              bar.update(static_cast<long>(1000 * fraction));
+              if (hooks.progress) hooks.progress(fraction);
+            },
+            [&] { return stop_signal != 0; }, checkpoint, [&](long done, long steps) { settling(done, steps); });
       });
     } catch (const vrut::SimulationUnstable&) {
       std::fprintf(stderr, "\n--timestep-safety sets the time-step safety (%g here)\n", num.timestep_safety);
-      if (fs::exists(checkpoint.path()))
-        std::fprintf(stderr, "\nthe last checkpoint before it is kept in %s\n", checkpoint.path().c_str());
+      if (checkpoint != nullptr && fs::exists(checkpoint->path()))
+        std::fprintf(stderr, "\nthe last checkpoint before it is kept in %s\n", checkpoint->path().c_str());
       throw;
     }
   }
@@ -196,20 +207,24 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
 
   const RuttingReport report = report_runs(runs, wt, ensemble, interrupted);
   const std::string what_was_run = "gradation " + ss.gradation.name + ", 3D";
-  write_deformation(output, runs, report, seeds, ensemble, "Virtual wheel-tracking test in 3D, gradation " + ss.gradation.name);
-  write_skeleton_plot(output, runs, "3D, gradation " + ss.gradation.name);
-  if (ensemble)
-    write_seeds_csv(output, runs, report, seeds, facts, "spheres,placed_stones,stone_volume_fraction", interrupted);
-  // Pictures and VTK of the first specimen.
-  draw::section3_png(sp, output.file("specimen_mid_depth.png").string());
-  draw::section3_png(sp, output.file("section_mid_depth.png").string(), 6.0, &runs3.front().final_positions);
-  draw::surface3_png(sp, output.file("surface.png").string(), 6.0, &runs3.front().final_positions);
-  final_vtk3(sp, runs3.front(), output.file("final.vtk").string());
+  if (output) {
+    write_deformation(*output, runs, report, seeds, ensemble,
+                      "Virtual wheel-tracking test in 3D, gradation " + ss.gradation.name);
+    write_skeleton_plot(*output, runs, "3D, gradation " + ss.gradation.name);
+    if (ensemble)
+      write_seeds_csv(*output, runs, report, seeds, facts, "spheres,placed_stones,stone_volume_fraction", interrupted);
+    // Pictures and VTK of the first specimen.
+    draw::section3_png(sp, output->file("specimen_mid_depth.png").string());
+    draw::section3_png(sp, output->file("section_mid_depth.png").string(), 6.0, &runs3.front().final_positions);
+    draw::surface3_png(sp, output->file("surface.png").string(), 6.0, &runs3.front().final_positions);
+    final_vtk3(sp, runs3.front(), output->file("final.vtk").string());
+  }
 
   double wall_seconds = 0.0;
   for (const auto& r : runs) wall_seconds = std::max(wall_seconds, r.wall_seconds);
   const double speed = all_spheres * static_cast<double>(res.steps) / wall_seconds;
-  nlohmann::json j;
+  RuttingOutcome outcome;
+  nlohmann::json& j = outcome.summary;
   j["dimension"] = 3;
   j["gradation"] = ss.gradation.name;
   j["seed"] = seeds.front();
@@ -233,21 +248,34 @@ int run_rutting_3d(RunOptions o, vrut::CheckpointFile& checkpoint, const std::st
   j["specimen"] = specimen_cli::specimen3_summary(sp);
   if (ensemble) j["ensemble"] = ensemble_json(runs, report, seeds, facts, interrupted, "spheres");
   j["skeleton"] = skeleton_summary_json(runs);
-  output.write_text("summary.json", j.dump(2) + '\n');
-  // The checkpoint of a stopped run goes with its partial results.
-  if (interrupted) fs::rename(checkpoint.path(), output.file(checkpoint.path().filename().string()));
-  output.commit();
-  if (interrupted) {
-    std::printf("partial results (%.1f of %.0f minutes, no dynamic stability) in %s\n"
-                "go on with: vrut-rutting --resume %s\n",
-                minutes_done, wt.minutes, o.out.c_str(), o.out.c_str());
-    return 128 + static_cast<int>(stop_signal);
+  if (output) {
+    output->write_text("summary.json", j.dump(2) + '\n');
+    // The checkpoint of a stopped run goes with its partial results.
+    if (interrupted && checkpoint != nullptr)
+      fs::rename(checkpoint->path(), output->file(checkpoint->path().filename().string()));
+    output->commit();
   }
-  char speed_text[128];
-  std::snprintf(speed_text, sizeof speed_text, "%zu spheres, %ld steps, %.0f s, %.3g particle-steps/s", all_spheres,
-                res.steps, wall_seconds, speed);
-  print_result(what_was_run, runs, report, wt, ensemble, speed_text, o.out, "; 3D fits no constant: docs/validation.md");
-  return 0;
+  outcome.runs = std::move(runs);
+  outcome.seeds = seeds;
+  outcome.report = report;
+  outcome.ensemble = ensemble;
+  outcome.interrupted = interrupted;
+  if (interrupted) {
+    outcome.exit_code = 128 + static_cast<int>(stop_signal);
+    if (hooks.print && output)
+      std::printf("partial results (%.1f of %.0f minutes, no dynamic stability) in %s\n"
+                  "go on with: vrut-rutting --resume %s\n",
+                  minutes_done, wt.minutes, o.out.c_str(), o.out.c_str());
+    return outcome;
+  }
+  if (hooks.print) {
+    char speed_text[128];
+    std::snprintf(speed_text, sizeof speed_text, "%zu spheres, %ld steps, %.0f s, %.3g particle-steps/s", all_spheres,
+                  outcome.runs.front().steps, wall_seconds, speed);
+    print_result(what_was_run, outcome.runs, report, wt, ensemble, speed_text, o.out,
+                 "; 3D fits no constant: docs/validation.md");
+  }
+  return outcome;
 }
 
-}  // namespace
+}  // namespace vrut::app

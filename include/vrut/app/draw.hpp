@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace draw {
+namespace vrut::app::draw {
 
 struct Rgb {
   double r, g, b;
@@ -151,4 +151,4 @@ inline void section_png(const vrut::Specimen& sp, const std::string& path, doubl
   c.save(path);
 }
 
-}  // namespace draw
+}  // namespace vrut::app::draw

@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-namespace ranks {
+namespace vrut::app::ranks {
 
 // MPI for the life of main(); one rank when vrut was built without MPI or
 // run without mpirun.
@@ -153,4 +153,4 @@ inline std::pair<vrut::RuttingResult, SpecimenFacts> from_json(const nlohmann::j
   return {r, {j.at("aggregates"), j.at("aggregate_area_fraction"), j.at("rank")}};
 }
 
-}  // namespace ranks
+}  // namespace vrut::app::ranks

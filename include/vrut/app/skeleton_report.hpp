@@ -4,7 +4,7 @@
 // contact, early (5 min) and at the end; the stones' films; the stones
 // touching per stone; the late creep. In summary.json, seeds.csv and
 // skeleton.png, 2D and 3D alike.
-#include "../common/seeds.hpp"
+#include "seeds.hpp"
 
 #include <vrut/io/output_dir.hpp>
 #include <vrut/io/plot.hpp>
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace vrut::app {
 
 // seeds.csv's columns of the skeleton, after the result columns.
 inline constexpr const char* skeleton_csv_columns =
@@ -26,7 +26,7 @@ inline constexpr const char* skeleton_csv_columns =
     "load_end_stone_spring_share,load_end_stone_film_share,load_end_mastic_share,"
     "stone_contacts_start,stone_contacts_bearing_start,stone_contacts_end,stone_contacts_bearing_end";
 
-std::string skeleton_csv_cells(const vrut::RuttingResult& r) {
+inline std::string skeleton_csv_cells(const vrut::RuttingResult& r) {
   const auto& s = r.skeleton;
   std::ostringstream out;
   out.precision(17);
@@ -42,9 +42,9 @@ std::string skeleton_csv_cells(const vrut::RuttingResult& r) {
 }
 
 // A number, or null where it is not defined (JSON has no NaN).
-nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+inline nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-nlohmann::json load_path_json(const vrut::LoadPath& p) {
+inline nlohmann::json load_path_json(const vrut::LoadPath& p) {
   if (!p.measured()) return nullptr;  // the run ended (or was stopped) before that minute
   return {{"minute", p.minutes},
           {"force_n", {{"stone_spring", p.stone_spring}, {"stone_film", p.stone_film}, {"mastic", p.mastic}}},
@@ -53,7 +53,7 @@ nlohmann::json load_path_json(const vrut::LoadPath& p) {
                      {"mastic", number_or_null(p.share(p.mastic))}}}};
 }
 
-nlohmann::json film_census_json(const vrut::FilmCensus& c) {
+inline nlohmann::json film_census_json(const vrut::FilmCensus& c) {
   nlohmann::json bins = nlohmann::json::array();
   for (int b = 0; b < vrut::film_census_bins; ++b)
     bins.push_back({{"film_diameters", vrut::FilmCensus::thickness(b)},
@@ -63,7 +63,7 @@ nlohmann::json film_census_json(const vrut::FilmCensus& c) {
 }
 
 // One specimen's skeleton, for summary.json.
-nlohmann::json skeleton_json(const vrut::RuttingResult& r) {
+inline nlohmann::json skeleton_json(const vrut::RuttingResult& r) {
   const auto& s = r.skeleton;
   return {{"late_creep_share", number_or_null(r.late_creep_share())},
           {"stones_touching_per_stone", number_or_null(r.stones_touching_per_stone())},
@@ -75,7 +75,7 @@ nlohmann::json skeleton_json(const vrut::RuttingResult& r) {
 
 // summary.json's "skeleton": its definitions, the means over the specimens
 // and each specimen's (in seed order).
-nlohmann::json skeleton_summary_json(const std::vector<vrut::RuttingResult>& runs) {
+inline nlohmann::json skeleton_summary_json(const std::vector<vrut::RuttingResult>& runs) {
   auto mean = [&](auto value) {
     double sum = 0.0;
     int n = 0;
@@ -110,7 +110,7 @@ nlohmann::json skeleton_summary_json(const std::vector<vrut::RuttingResult>& run
 
 // skeleton.png: the load path's shares at 5 min and at the end, the mean
 // over the specimens, one bar per class.
-void write_skeleton_plot(vrut::OutputDir& output, const std::vector<vrut::RuttingResult>& runs,
+inline void write_skeleton_plot(vrut::OutputDir& output, const std::vector<vrut::RuttingResult>& runs,
                          const std::string& title) {
   auto mean_share = [&](bool early, int cls) {
     double sum = 0.0;
@@ -139,4 +139,4 @@ void write_skeleton_plot(vrut::OutputDir& output, const std::vector<vrut::Ruttin
   vrut::write_plot_png(output.file("skeleton.png").string(), spec, series);
 }
 
-}  // namespace
+}  // namespace vrut::app

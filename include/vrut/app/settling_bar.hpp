@@ -4,7 +4,7 @@
 // SIGTERM comes while it settles. The run only stops at the loading's first
 // sample, where its checkpoint keeps the settled specimens, so the line says
 // so rather than leave a long settling silent.
-#include "../common/seeds.hpp"
+#include "seeds.hpp"
 #include "stop_signal.hpp"
 
 #include <vrut/io/progress.hpp>
@@ -15,7 +15,7 @@
 #include <memory>
 #include <string>
 
-namespace {
+namespace vrut::app {
 
 class SettlingBar {
  public:
@@ -44,4 +44,4 @@ class SettlingBar {
   bool told_ = false;
 };
 
-}  // namespace
+}  // namespace vrut::app

@@ -22,7 +22,7 @@
 
 #include <unistd.h>
 
-namespace specimen_cli {
+namespace vrut::app::specimen_cli {
 
 struct Specimen3Options {
   double depth_mm = vrut::PlacementSettings3{}.depth;
@@ -174,4 +174,4 @@ inline void write_specimen3_vtk(const vrut::Specimen3& sp, const std::string& pa
   vrut::write_vtk_points(path, "vrut 3D specimen (mm, y up, z periodic); group 0 mastic, 1 stone", x, y, z, data);
 }
 
-}  // namespace specimen_cli
+}  // namespace vrut::app::specimen_cli

@@ -2,9 +2,9 @@
 // vrut-rutting's report of a run or an ensemble, in 2D and 3D alike: the
 // curve (deformation.csv and .png), each specimen's numbers (seeds.csv), the
 // ensemble's part of summary.json, and the line printed at the end.
-#include "../common/ranks.hpp"
-#include "../common/seeds.hpp"
-#include "outputs.hpp"
+#include "ranks.hpp"
+#include "seeds.hpp"
+#include "rutting_outputs.hpp"
 #include "skeleton_report.hpp"
 
 #include <vrut/analysis/rutting_ensemble.hpp>
@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace vrut::app {
 
 // The runs' numbers as the report gives them: the ensemble's statistics,
 // each DS as the standard reports it, their median with the censored ones
@@ -37,7 +37,7 @@ struct RuttingReport {
   bool intervals = false;  // an ensemble of at least two, run to the end
 };
 
-RuttingReport report_runs(const std::vector<vrut::RuttingResult>& runs, const vrut::WheelTracking& wt, bool ensemble,
+inline RuttingReport report_runs(const std::vector<vrut::RuttingResult>& runs, const vrut::WheelTracking& wt, bool ensemble,
                           bool interrupted) {
   RuttingReport r;
   r.summary = vrut::summarize_rutting(runs, wt);
@@ -60,7 +60,7 @@ RuttingReport report_runs(const std::vector<vrut::RuttingResult>& runs, const vr
 
 // deformation.csv and .png: one specimen's curve, or the ensemble's mean,
 // interval and every specimen's curve. title: "Virtual wheel-tracking test, ..."
-void write_deformation(vrut::OutputDir& output, const std::vector<vrut::RuttingResult>& runs,
+inline void write_deformation(vrut::OutputDir& output, const std::vector<vrut::RuttingResult>& runs,
                        const RuttingReport& report, const std::vector<std::uint64_t>& seeds, bool ensemble,
                        const std::string& title) {
   const auto& summary = report.summary;
@@ -120,7 +120,7 @@ void write_deformation(vrut::OutputDir& output, const std::vector<vrut::RuttingR
 // seeds.csv: each specimen's numbers, its skeleton's (skeleton_report.hpp) after them. facts_columns names the particles'
 // and stones' columns ("disks,aggregates,aggregate_area_fraction" in 2D);
 // images, where given, add the image each specimen came from.
-void write_seeds_csv(vrut::OutputDir& output, const std::vector<vrut::RuttingResult>& runs, const RuttingReport& report,
+inline void write_seeds_csv(vrut::OutputDir& output, const std::vector<vrut::RuttingResult>& runs, const RuttingReport& report,
                      const std::vector<std::uint64_t>& seeds, const std::vector<ranks::SpecimenFacts>& facts,
                      const std::string& facts_columns, bool interrupted, const std::vector<std::string>& images = {}) {
   std::ostringstream per_seed;
@@ -148,7 +148,7 @@ void write_seeds_csv(vrut::OutputDir& output, const std::vector<vrut::RuttingRes
 // summary.json's "ensemble": the statistics over the specimens, the
 // standard's DS values with their intervals, and each seed's numbers.
 // particles: what each specimen's particles are called ("disks", "spheres").
-nlohmann::json ensemble_json(const std::vector<vrut::RuttingResult>& runs, const RuttingReport& report,
+inline nlohmann::json ensemble_json(const std::vector<vrut::RuttingResult>& runs, const RuttingReport& report,
                              const std::vector<std::uint64_t>& seeds, const std::vector<ranks::SpecimenFacts>& facts,
                              bool interrupted, const std::string& particles) {
   const auto& summary = report.summary;
@@ -229,7 +229,7 @@ void add_shared_summary(nlohmann::json& j, const RunFacts& res, const RuttingRep
 // The line printed at the end of a run that went to its end: what was run,
 // the rut depth and DS (an ensemble's statistics and intervals), and how
 // fast (`speed`: particles, steps, seconds).
-void print_result(const std::string& what_was_run, const std::vector<vrut::RuttingResult>& runs,
+inline void print_result(const std::string& what_was_run, const std::vector<vrut::RuttingResult>& runs,
                   const RuttingReport& report, const vrut::WheelTracking& wt, bool ensemble, const std::string& speed,
                   const std::string& out, const std::string& note = "") {
   // A DS that is only a lower bound reads "above N", as a laboratory writes it.
@@ -299,4 +299,4 @@ void print_result(const std::string& what_was_run, const std::vector<vrut::Rutti
   std::printf("results in %s\n", out.c_str());
 }
 
-}  // namespace
+}  // namespace vrut::app

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace draw {
+namespace vrut::app::draw {
 
 // The section at mid-depth: the spheres of the two lattice layers on
 // either side of it (together a square grid), in their stone's colour or
@@ -71,4 +71,4 @@ inline void surface3_png(const vrut::Specimen3& sp, const std::string& path, dou
   c.save(path);
 }
 
-}  // namespace draw
+}  // namespace vrut::app::draw

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace cli {
+namespace vrut::app::cli {
 
 // "1 specimen", "3 specimens": an ensemble may be of one seed (--seeds 4).
 inline std::string specimens_text(std::size_t n) {
@@ -48,4 +48,4 @@ inline std::vector<std::uint64_t> parse_seed_list(const std::string& text) {
   return seeds;
 }
 
-}  // namespace cli
+}  // namespace vrut::app::cli

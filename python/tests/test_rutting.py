@@ -1,0 +1,130 @@
+"""vrut.rutting() against vrut-rutting: the same inputs give the same numbers,
+to the last bit, and the same errors."""
+import json
+import os
+import signal
+import subprocess
+import threading
+
+import numpy
+import pytest
+
+import vrut
+
+# A short 2D run (a 100 mm section, about 3 s on one thread), one thread so
+# that runs compare bit for bit whatever the machine.
+SMALL = dict(gradation=2, seed=1, width_mm=100, threads=1)
+SMALL_ARGS = ["--gradation", "2", "--seed", "1", "--width-mm", "100", "--threads", "1"]
+# What differs between two runs of one input: the clock, and what it gives.
+CLOCK = {"wall_seconds", "particle_steps_per_second"}
+
+
+def run_cli(cli, args, tmp_path, name="cli"):
+    out = tmp_path / name
+    done = subprocess.run([cli, *args, "--out", str(out)], capture_output=True, text=True)
+    return done, out
+
+
+def without_clock(summary):
+    return {k: v for k, v in summary.items() if k not in CLOCK}
+
+
+def test_same_numbers_and_files_as_the_command_line(cli, tmp_path):
+    done, out = run_cli(cli, SMALL_ARGS, tmp_path)
+    assert done.returncode == 0, done.stderr
+    expected = json.loads((out / "summary.json").read_text())
+    run = vrut.rutting(out=tmp_path / "py", **SMALL)
+    # Every double of summary.json, as the command line wrote it (JSON keeps 17 digits).
+    assert without_clock(run.summary) == without_clock(expected)
+    assert run.rut_depth_mm == expected["rut_depth_mm"]
+    assert run.dynamic_stability == expected["dynamic_stability_passes_per_mm"]
+    # The module's folder holds the command line's files, the curve bit for bit.
+    assert (tmp_path / "py" / "deformation.csv").read_bytes() == (out / "deformation.csv").read_bytes()
+    written = json.loads((tmp_path / "py" / "summary.json").read_text())
+    assert without_clock(written) == without_clock(expected)
+    # The curve as arrays: the file's columns, read independently.
+    table = numpy.genfromtxt(out / "deformation.csv", delimiter=",", names=True)
+    assert numpy.array_equal(run.minutes, table["minutes"])
+    assert numpy.array_equal(run.deformation_mm, table["deformation_mm"])
+    assert run.deformation_mm[-1] == expected["rut_depth_mm"]
+
+
+def test_float_options_reach_the_run_exactly(cli, tmp_path):
+    # A value with no short decimal form: the module must pass it without rounding.
+    eta1 = 83.34 * (1.0 + 2.0 ** -40)
+    done, out = run_cli(cli, SMALL_ARGS + ["--eta1", repr(eta1), "--minutes", "46"], tmp_path)
+    assert done.returncode == 0, done.stderr
+    expected = json.loads((out / "summary.json").read_text())
+    run = vrut.rutting(eta1=eta1, minutes=46, **SMALL)
+    assert without_clock(run.summary) == without_clock(expected)
+
+
+def test_an_ensemble_equals_its_single_runs():
+    both = vrut.rutting(gradation=2, seeds=[1, 2], width_mm=100, threads=1, minutes=46)
+    assert both.seeds == [1, 2]
+    for k, seed in enumerate((1, 2)):
+        alone = vrut.rutting(gradation=2, seed=seed, width_mm=100, threads=1, minutes=46)
+        assert numpy.array_equal(both.curves_mm[k], alone.deformation_mm)
+        assert both.per_seed[k]["rut_depth_mm"] == alone.rut_depth_mm
+    # The mean curve is the specimens' mean, sample by sample.
+    assert numpy.allclose(both.deformation_mm, both.curves_mm.mean(axis=0), rtol=1e-15, atol=0)
+    low, high = both.ci95_mm
+    assert numpy.all(low <= both.deformation_mm) and numpy.all(both.deformation_mm <= high)
+
+
+@pytest.mark.parametrize("kwargs, args", [
+    (dict(eta1=-1.0), ["--eta1", "-1.0"]),
+    (dict(air_voids=0.5), ["--air-voids", "0.5"]),
+    (dict(stone_film="thick"), ["--stone-film", "thick"]),
+    (dict(seeds="3-1"), ["--seeds", "3-1"]),
+    (dict(dim=3, disk_radius_mm=0.5), ["--dim", "3", "--disk-radius-mm", "0.5"]),
+    (dict(least_film="thin"), ["--least-film", "thin"]),
+])
+def test_bad_input_raises_the_command_lines_message(cli, tmp_path, kwargs, args):
+    done, _ = run_cli(cli, args, tmp_path)
+    assert done.returncode == 2
+    message = done.stderr.splitlines()[0]
+    message = message[len("error: "):] if message.startswith("error: ") else message
+    with pytest.raises(ValueError) as raised:
+        vrut.rutting(**kwargs)
+    assert str(raised.value) == message
+
+
+def test_unknown_or_reserved_keywords_are_type_errors():
+    with pytest.raises(TypeError, match="unexpected keyword argument 'width'"):
+        vrut.rutting(width=100)
+    with pytest.raises(TypeError, match="resume"):
+        vrut.rutting(resume="out")
+    with pytest.raises(TypeError, match="switch"):
+        vrut.rutting(exact_stones="yes")
+
+
+def test_progress_reaches_the_end():
+    seen = []
+    vrut.rutting(progress=seen.append, minutes=46, **SMALL)
+    assert seen and seen[-1] == pytest.approx(1.0, abs=1e-3)
+    assert all(a <= b for a, b in zip(seen, seen[1:]))
+
+
+def test_ctrl_c_stops_cleanly_with_a_checkpoint(tmp_path):
+    python_handler = signal.getsignal(signal.SIGINT)
+    started = threading.Event()
+
+    def progress(fraction):
+        if not started.is_set():
+            started.set()
+            os.kill(os.getpid(), signal.SIGINT)  # as Ctrl-C would, while the loading runs
+
+    with pytest.raises(KeyboardInterrupt, match="vrut-rutting --resume"):
+        vrut.rutting(out=tmp_path / "stopped", progress=progress, **SMALL)
+    summary = json.loads((tmp_path / "stopped" / "summary.json").read_text())
+    assert summary["interrupted"] is True and summary["minutes_done"] < 60
+    assert (tmp_path / "stopped" / "checkpoint.vrut").exists()
+    # Python has its own Ctrl-C back.
+    assert signal.getsignal(signal.SIGINT) is python_handler
+
+
+def test_one_kokkos_runtime_per_process():
+    vrut.rutting(minutes=46, **SMALL)  # Kokkos runs on one thread from here on
+    with pytest.raises(ValueError, match="start a new Python process"):
+        vrut.rutting(gradation=2, seed=1, width_mm=100, threads=2)

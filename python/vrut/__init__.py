@@ -1,0 +1,244 @@
+"""vrut from Python: the virtual wheel-tracking (rutting) test of an asphalt
+mixture, run by the same C++ as the command line ``vrut-rutting``.
+
+Every keyword argument is one of vrut-rutting's options, named without its
+leading dashes and with ``_`` for ``-`` (``--width-mm 100`` is
+``width_mm=100``, ``--E1 4.64`` is ``E1=4.64``, ``--exact-stones`` is
+``exact_stones=True``). The options are checked by the command line's own
+table: a bad value raises ``ValueError`` with the command line's message.
+``vrut.options()`` lists them with their defaults and help (docs/python.md).
+"""
+
+import json
+import sys
+
+from . import _vrut
+
+__version__ = _vrut.version
+__all__ = ["rutting", "specimen", "creep", "options", "RuttingRun", "Specimen", "CreepRun", "backends"]
+
+# Options that the module sets itself, or that only make sense on a command line.
+_RESERVED = {"out": "give out= (the output folder) as the function's own argument",
+             "resume": "resume a run with the command line: vrut-rutting --resume DIR",
+             "config": "give the options as keyword arguments (or **dict)",
+             "help": "see vrut.options()"}
+
+
+def options(program="rutting"):
+    """vrut-rutting's options (or vrut-creep's, program="creep"): a list of
+    dicts (name, flag, default, help)."""
+    return _vrut.options(program)
+
+
+def backends():
+    """The Kokkos backends of this build ('serial', 'openmp', ...)."""
+    return _vrut.backends()
+
+
+def _text(value):
+    # repr() of a float is the shortest text that reads back to the same
+    # double, so the C++ side parses exactly the value given.
+    if isinstance(value, float):
+        return repr(value)
+    return str(value)
+
+
+def _arguments(function, kwargs):
+    known = {o["name"]: o for o in _vrut.options("creep" if function == "creep" else "rutting")}
+    args = []
+    for key, value in kwargs.items():
+        name = key.replace("_", "-")
+        if name in _RESERVED:
+            raise TypeError(f"{function}(): {key}: {_RESERVED[name]}")
+        if name not in known:
+            raise TypeError(f"{function}() got an unexpected keyword argument '{key}' (vrut.options() lists them)")
+        if value is None:
+            continue
+        if known[name]["flag"]:
+            if not isinstance(value, bool):
+                raise TypeError(f"{function}(): {key} is a switch: True or False, not {value!r}")
+            if value:
+                args.append("--" + name)
+            continue
+        if name == "seeds" and not isinstance(value, str):
+            value = ",".join(str(int(s)) for s in value)
+        if name == "image" and not isinstance(value, str):
+            for path in value:
+                args += ["--image", str(path)]
+            continue
+        args += ["--" + name, _text(value)]
+    return args
+
+
+def _numpy_or_list(values):
+    try:
+        import numpy
+    except ImportError:
+        return values
+    return numpy.asarray(values, dtype=float)
+
+
+class RuttingRun:
+    """The result of vrut.rutting(): one specimen's, or an ensemble's.
+
+    rut_depth_mm, dynamic_stability (passes/mm) and dynamic_stability_standard
+    (the standard's value, or None past its cap) are the run's numbers; for an
+    ensemble, the mean rut depth and the DS of the mean curve, as summary.json
+    gives them. summary is summary.json as a dict; minutes, deformation_mm
+    (the mean curve), curves_mm (one row per specimen) and the 95 % band are
+    numpy arrays where numpy is installed.
+    """
+
+    def __init__(self, raw):
+        self.summary = json.loads(raw["summary"])
+        self.seeds = list(raw["seeds"])
+        self.interrupted = bool(raw["interrupted"])
+        self._raw = raw
+        s = self.summary
+        ensemble = s.get("ensemble")
+        if ensemble is not None:
+            self.rut_depth_mm = ensemble["rut_depth_mm"]["mean"]
+            self.dynamic_stability = ensemble["dynamic_stability_of_mean_curve"]
+            standard = ensemble.get("dynamic_stability_standard_of_mean_curve")
+        else:
+            self.rut_depth_mm = s["rut_depth_mm"]
+            self.dynamic_stability = s["dynamic_stability_passes_per_mm"]
+            standard = s.get("dynamic_stability_standard")
+        self.dynamic_stability_standard = (None if standard is None or standard.get("censored")
+                                           else standard["passes_per_mm"])
+        self.wall_seconds = s["wall_seconds"]
+
+    @property
+    def minutes(self):
+        return _numpy_or_list(self._raw["minutes"])
+
+    @property
+    def deformation_mm(self):
+        return _numpy_or_list(self._raw["mean_curve_mm"])
+
+    @property
+    def curves_mm(self):
+        return _numpy_or_list(self._raw["curves_mm"])
+
+    @property
+    def ci95_mm(self):
+        """The 95 % interval of the mean curve at each sample (low, high); empty for one specimen."""
+        return _numpy_or_list(self._raw["ci95_low_mm"]), _numpy_or_list(self._raw["ci95_high_mm"])
+
+    @property
+    def per_seed(self):
+        """Each specimen's numbers (summary.json's ensemble.per_seed), or the one specimen's."""
+        ensemble = self.summary.get("ensemble")
+        if ensemble is not None:
+            return ensemble["per_seed"]
+        return [{"seed": self.seeds[0], "rut_depth_mm": self.rut_depth_mm,
+                 "dynamic_stability_passes_per_mm": self.dynamic_stability}]
+
+    def __repr__(self):
+        n = len(self.seeds)
+        what = f"{n} specimens" if n > 1 else f"seed {self.seeds[0]}"
+        return f"<vrut.RuttingRun {what}: rut depth {self.rut_depth_mm:.2f} mm, DS {self.dynamic_stability:.0f} passes/mm>"
+
+
+def _progress_bar(progress):
+    """progress=True: a tqdm bar where tqdm is installed (else the command line's bar on stderr)."""
+    if progress is True:
+        try:
+            from tqdm import tqdm
+        except ImportError:
+            return None, None
+        bar = tqdm(total=1000, unit="permille", desc="loading")
+
+        def update(fraction):
+            bar.update(int(1000 * fraction) - bar.n)
+        return update, bar
+    if callable(progress):
+        return progress, None
+    return None, None
+
+
+def rutting(out=None, progress=None, print=False, **options):
+    """Runs the virtual wheel-tracking test, as vrut-rutting does.
+
+    out: an output folder (vrut-rutting's files), or None for none.
+    progress: a callable taking the loading's fraction done (0 to 1) at each
+      sample, or True for a tqdm bar where tqdm is installed.
+    print: print the command line's result lines on stdout.
+    options: vrut-rutting's options (vrut.options()), e.g. gradation=2,
+      seed=1 or seeds="1-16" (or a list), width_mm=100, dim=3.
+
+    Ctrl-C stops the run at its next sample, as on the command line; with
+    out= the partial results and a checkpoint are written there (go on with
+    vrut-rutting --resume), then KeyboardInterrupt is raised.
+    """
+    args = _arguments("rutting", options)
+    callback, bar = _progress_bar(progress)
+    try:
+        raw = _vrut.rutting(args, "" if out is None else str(out), callback, bool(print))
+    finally:
+        if bar is not None:
+            bar.close()
+    run = RuttingRun(raw)
+    if run.interrupted:
+        where = f"; partial results in {out}, go on with: vrut-rutting --resume {out}" if out else ""
+        raise KeyboardInterrupt(f"the run stopped at {run.summary['minutes_done']:.1f} minutes{where}")
+    return run
+
+
+class Specimen:
+    """A specimen of vrut.specimen(): particles and measures.
+
+    x_mm, y_mm (and z_mm in 3D) are the particles' centres, stone the stone
+    (or aggregate) each belongs to, -1 for mastic; radius_mm their radius;
+    summary the specimen's measures as summary.json's "specimen" gives them.
+    """
+
+    def __init__(self, raw):
+        self.summary = json.loads(raw["summary"])
+        self.radius_mm = raw["radius_mm"]
+        self.x_mm = _numpy_or_list(raw["x_mm"])
+        self.y_mm = _numpy_or_list(raw["y_mm"])
+        self.z_mm = _numpy_or_list(raw["z_mm"]) if "z_mm" in raw else None
+        try:
+            import numpy
+            self.stone = numpy.asarray(raw["stone"], dtype=int)
+        except ImportError:
+            self.stone = list(raw["stone"])
+
+    def __len__(self):
+        return len(self.x_mm)
+
+    def __repr__(self):
+        dim = 3 if self.z_mm is not None else 2
+        return f"<vrut.Specimen {dim}D: {len(self)} particles of radius {self.radius_mm} mm>"
+
+
+def specimen(**options):
+    """One specimen, 2D or 3D (dim=3), or from an image (image="core.png"),
+    from vrut-rutting's specimen options (gradation, seed, width_mm, ...)."""
+    return Specimen(_vrut.specimen(_arguments("specimen", options)))
+
+
+class CreepRun:
+    """The result of vrut.creep(): summary is creep.json as a dict (the
+    apparent Burger's parameters and their ratios to the macro ones among
+    them); time_s, reduced_time_s, strain, strain_analytic (the macro
+    Burger's model) and plate_stress_mpa are the samples, numpy arrays where
+    numpy is installed."""
+
+    def __init__(self, raw):
+        self.summary = json.loads(raw["summary"])
+        for key in ("time_s", "reduced_time_s", "strain", "strain_analytic", "plate_stress_mpa"):
+            setattr(self, key, _numpy_or_list(raw[key]))
+
+    def __repr__(self):
+        r = self.summary["ratio_apparent_to_macro"]
+        return f"<vrut.CreepRun apparent/macro E1 {r['E1']:.4f} eta1 {r['eta1']:.4f} E2 {r['E2']:.4f} eta2 {r['eta2']:.4f}>"
+
+
+def creep(out=None, **options):
+    """The virtual creep test of vrut-creep's options (vrut.options("creep")):
+    a bonded all-mastic block under a constant stress, against the macro
+    Burger's model. out: vrut-creep's files (creep.csv, creep.json,
+    creep.png) in this folder, or None for none."""
+    return CreepRun(_vrut.creep(_arguments("creep", options), "" if out is None else str(out)))
