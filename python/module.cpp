@@ -164,6 +164,34 @@ py::dict specimen(const std::vector<std::string>& args) {
   return d;
 }
 
+// A gradation checked as the command line checks a CSV file's: name, then
+// the sieves (mm) and percent passing as the library keeps them.
+py::tuple gradation(const py::object& which, const std::vector<double>& sieve_mm, const std::vector<double>& passing,
+                    const std::string& name) {
+  vrut::Gradation g;
+  if (!which.is_none()) {
+    g = vrut::builtin_gradation(which.cast<int>());
+  } else {
+    if (sieve_mm.size() != passing.size())
+      throw std::invalid_argument("a gradation: " + std::to_string(sieve_mm.size()) + " sieves and " +
+                                  std::to_string(passing.size()) + " percentages passing");
+    if (sieve_mm.empty()) throw std::invalid_argument("a gradation: no sieves");
+    g = {name, sieve_mm, passing};
+    vrut::validate_gradation(g, [&](std::size_t i) { return name + " row " + std::to_string(i + 1); });
+  }
+  return py::make_tuple(g.name, g.sieve_mm, g.passing);
+}
+
+// Parses without running: the options' checks alone.
+void check(const std::string& program, const std::vector<std::string>& args) {
+  app::RunOptions o;
+  app::CreepOptions c;
+  CLI::App cli("vrut." + program);
+  if (program == "creep") app::add_creep_options(cli, c);
+  else app::add_run_options(cli, o);
+  parse(cli, args);
+}
+
 // vrut-creep with these arguments; out empty: no folder written.
 py::dict creep(const std::vector<std::string>& args, const std::string& out) {
   app::CreepOptions o;
@@ -208,6 +236,7 @@ py::list options(const std::string& program) {
     d["flag"] = opt->get_items_expected_max() == 0;  // takes no value
     d["default"] = opt->get_default_str();
     d["help"] = opt->get_description();
+    d["group"] = opt->get_group();
     out.append(d);
   }
   return out;
@@ -229,6 +258,8 @@ PYBIND11_MODULE(_vrut, m) {
   });
   m.def("rutting", &rutting, py::arg("args"), py::arg("out"), py::arg("progress"), py::arg("print"));
   m.def("specimen", &specimen, py::arg("args"));
+  m.def("gradation", &gradation, py::arg("which"), py::arg("sieve_mm"), py::arg("passing"), py::arg("name"));
+  m.def("check", &check, py::arg("program"), py::arg("args"));
   m.def("creep", &creep, py::arg("args"), py::arg("out"));
   m.def("options", &options, py::arg("program") = "rutting");
   m.def("backends", &vrut::available_backends);

@@ -10,12 +10,15 @@ table: a bad value raises ``ValueError`` with the command line's message.
 """
 
 import json
+import os
 import sys
+import tempfile
 
 from . import _vrut
 
 __version__ = _vrut.version
-__all__ = ["rutting", "specimen", "creep", "options", "RuttingRun", "Specimen", "CreepRun", "backends"]
+__all__ = ["rutting", "specimen", "creep", "options", "Gradation", "Materials", "RuttingRun", "Specimen", "CreepRun",
+           "backends"]
 
 # Options that the module sets itself, or that only make sense on a command line.
 _RESERVED = {"out": "give out= (the output folder) as the function's own argument",
@@ -41,6 +44,77 @@ def _text(value):
     if isinstance(value, float):
         return repr(value)
     return str(value)
+
+
+class Gradation:
+    """A mix's gradation: a built-in one, Gradation(2) (1, 2, 3: docs/method.md),
+    or a table, Gradation(sieves_mm=[...], percent_passing=[...], name="mine"),
+    checked as the command line checks a gradation file (sieves strictly
+    decreasing, 100 % passing the largest, passing not increasing). Give it
+    as gradation= to vrut.rutting or vrut.specimen."""
+
+    def __init__(self, builtin=None, *, sieves_mm=None, percent_passing=None, name="gradation"):
+        if (builtin is None) == (sieves_mm is None):
+            raise TypeError("Gradation(): a built-in number (1, 2, 3) or sieves_mm= with percent_passing=")
+        if builtin is not None:
+            if not isinstance(builtin, int) or isinstance(builtin, bool):
+                raise TypeError(f"Gradation(): the built-in mixes are numbered 1, 2, 3, not {builtin!r}")
+            self.builtin = builtin
+            self.name, sieves, passing = _vrut.gradation(builtin, [], [], "")
+        else:
+            if percent_passing is None:
+                raise TypeError("Gradation(): sieves_mm= needs percent_passing=")
+            if not name or os.sep in name:
+                raise ValueError(f"Gradation(): name {name!r}: a plain name, no path")
+            self.builtin = None
+            self.name, sieves, passing = _vrut.gradation(None, [float(d) for d in sieves_mm],
+                                                         [float(p) for p in percent_passing], name)
+        self.sieves_mm, self.percent_passing = list(sieves), list(passing)
+
+    def _option(self, folder):
+        """The --gradation text: the number, or a CSV file written to folder."""
+        if self.builtin is not None:
+            return str(self.builtin)
+        path = os.path.join(folder, self.name + ".csv")
+        with open(path, "w") as f:
+            f.write("sieve_mm,percent_passing\n")
+            for d, p in zip(self.sieves_mm, self.percent_passing):
+                f.write(f"{d!r},{p!r}\n")
+        return path
+
+    def __repr__(self):
+        rows = ", ".join(f"{d:g} mm: {p:g} %" for d, p in zip(self.sieves_mm, self.percent_passing))
+        return f"<vrut.Gradation {self.name}: {rows}>"
+
+
+# The option groups (vrut.options()) that make a Materials.
+_MATERIAL_GROUPS = {"Materials", "Numerics", "Loading"}
+
+
+class Materials:
+    """The materials, numerics and loading of a run (vrut-rutting's options
+    of those groups: the mastic's Burger's values E1, eta1, E2, eta2, the
+    stones, friction, the film, the wheel...), checked now as the command line
+    checks them. Give it as materials= to vrut.rutting; keyword arguments
+    given beside it win.
+
+        soft = vrut.Materials(eta1=60.0, stone_friction=0.3)
+        vrut.rutting(gradation=2, seed=1, materials=soft)
+    """
+
+    def __init__(self, **options):
+        known = {o["name"]: o for o in _vrut.options("rutting")}
+        for key in options:
+            o = known.get(key.replace("_", "-"))
+            if o is None or o["group"] not in _MATERIAL_GROUPS:
+                groups = ", ".join(sorted(_MATERIAL_GROUPS))
+                raise TypeError(f"Materials() got an unexpected keyword argument '{key}' (the options of the groups "
+                                f"{groups} in vrut.options())")
+        _vrut.check("rutting", _arguments("Materials", options))
+        self.options = dict(options)
+
+    def __repr__(self):
+        return "vrut.Materials(" + ", ".join(f"{k}={v!r}" for k, v in self.options.items()) + ")"
 
 
 def _arguments(function, kwargs):
@@ -157,24 +231,37 @@ def _progress_bar(progress):
     return None, None
 
 
-def rutting(out=None, progress=None, print=False, **options):
+def _with_gradation_and_materials(options, folder, materials=None):
+    if materials is not None:
+        if not isinstance(materials, Materials):
+            raise TypeError(f"materials: a vrut.Materials, not {type(materials).__name__}")
+        options = {**materials.options, **options}
+    g = options.get("gradation")
+    if isinstance(g, Gradation):
+        options = {**options, "gradation": g._option(folder)}
+    return options
+
+
+def rutting(out=None, progress=None, print=False, materials=None, **options):
     """Runs the virtual wheel-tracking test, as vrut-rutting does.
 
     out: an output folder (vrut-rutting's files), or None for none.
     progress: a callable taking the loading's fraction done (0 to 1) at each
       sample, or True for a tqdm bar where tqdm is installed.
     print: print the command line's result lines on stdout.
-    options: vrut-rutting's options (vrut.options()), e.g. gradation=2,
-      seed=1 or seeds="1-16" (or a list), width_mm=100, dim=3.
+    materials: a vrut.Materials (its options; those given here win).
+    options: vrut-rutting's options (vrut.options()), e.g. gradation=2 (or
+      a vrut.Gradation), seed=1 or seeds="1-16" (or a list), width_mm=100, dim=3.
 
     Ctrl-C stops the run at its next sample, as on the command line; with
     out= the partial results and a checkpoint are written there (go on with
     vrut-rutting --resume), then KeyboardInterrupt is raised.
     """
-    args = _arguments("rutting", options)
     callback, bar = _progress_bar(progress)
     try:
-        raw = _vrut.rutting(args, "" if out is None else str(out), callback, bool(print))
+        with tempfile.TemporaryDirectory(prefix="vrut-") as folder:
+            args = _arguments("rutting", _with_gradation_and_materials(options, folder, materials))
+            raw = _vrut.rutting(args, "" if out is None else str(out), callback, bool(print))
     finally:
         if bar is not None:
             bar.close()
@@ -216,7 +303,8 @@ class Specimen:
 def specimen(**options):
     """One specimen, 2D or 3D (dim=3), or from an image (image="core.png"),
     from vrut-rutting's specimen options (gradation, seed, width_mm, ...)."""
-    return Specimen(_vrut.specimen(_arguments("specimen", options)))
+    with tempfile.TemporaryDirectory(prefix="vrut-") as folder:
+        return Specimen(_vrut.specimen(_arguments("specimen", _with_gradation_and_materials(options, folder))))
 
 
 class CreepRun:
