@@ -11,6 +11,7 @@
 #include <vrut/app/rutting_options.hpp>
 #include <vrut/app/specimen3_cli.hpp>
 #include <vrut/app/specimen_cli.hpp>
+#include <vrut/app/stop_signal.hpp>
 #include <vrut/backend.hpp>
 #include <vrut/io/checkpoint.hpp>
 #include <vrut/version.hpp>
@@ -48,9 +49,22 @@ void start_kokkos(int threads) {
     return;
   }
   vrut::initialize_kokkos(threads);
+  py::gil_scoped_acquire python;  // called from a run that let the interpreter go
   py::module_::import("atexit").attr("register")(py::cpp_function([] {
     if (Kokkos::is_initialized()) Kokkos::finalize();
   }));
+}
+
+// A whole run of the module: Ctrl-C and SIGTERM caught from its first line
+// (the run stops at the loading's first sample when one came while the
+// specimen was made), and the interpreter free for other Python threads
+// while it runs.
+template <class Run>
+auto run_outside_python(Run&& run) {
+  app::stop_signal = 0;
+  const app::CatchStopSignals catching;
+  py::gil_scoped_release free;
+  return run();
 }
 
 // CLI11 takes its arguments last first.
@@ -90,17 +104,24 @@ py::dict rutting(const std::vector<std::string>& args, const std::string& out, c
     header["config_with_help"] = config_text;
     checkpoint.emplace(std::filesystem::path(out) / "checkpoint.vrut", given.checkpoint_every, header);
   }
-  start_kokkos(given.threads);
   app::RuttingHooks hooks;
   hooks.print = print;
-  if (!progress.is_none()) hooks.progress = [&](double fraction) { progress(fraction); };
+  hooks.start_runtime = start_kokkos;
+  if (!progress.is_none())
+    hooks.progress = [&](double fraction) {
+      py::gil_scoped_acquire python;
+      progress(fraction);
+    };
   int argc = 0;
   char** argv = nullptr;
   const app::ranks::Session one_rank(argc, argv);
   vrut::CheckpointFile* file = checkpoint ? &*checkpoint : nullptr;
-  const app::RuttingOutcome outcome = given.dim == 3 ? app::run_rutting_3d(given, file, config_text, hooks)
-                                                     : app::run_rutting_2d(given, file, config_text, one_rank, hooks);
+  const app::RuttingOutcome outcome = run_outside_python([&] {
+    return given.dim == 3 ? app::run_rutting_3d(given, file, config_text, hooks)
+                          : app::run_rutting_2d(given, file, config_text, one_rank, hooks);
+  });
   py::dict d;
+  d["exit_code"] = outcome.exit_code;
   d["summary"] = outcome.summary.dump();
   d["seeds"] = outcome.seeds;
   d["interrupted"] = outcome.interrupted;
@@ -128,10 +149,12 @@ py::dict specimen(const std::vector<std::string>& args) {
   py::dict d;
   py::list x, y, z, stone;
   if (o.dim == 3) {
-    start_kokkos(o.threads);  // a compacted specimen uses the host threads
     vrut::SpecimenSettings3 ss = app::specimen_cli::to_settings3(o.so, o.o3);
-    ss.compaction.threads = vrut::concurrency(Kokkos::DefaultHostExecutionSpace());
-    const vrut::Specimen3 sp = vrut::generate_specimen3(ss);
+    const vrut::Specimen3 sp = run_outside_python([&] {
+      start_kokkos(o.threads);  // a compacted specimen uses the host threads
+      ss.compaction.threads = vrut::concurrency(Kokkos::DefaultHostExecutionSpace());
+      return vrut::generate_specimen3(ss);
+    });
     for (std::size_t i = 0; i < sp.spheres.centers.size(); ++i) {
       x.append(sp.spheres.centers[i].x());
       y.append(sp.spheres.centers[i].y());
@@ -199,8 +222,7 @@ py::dict creep(const std::vector<std::string>& args, const std::string& out) {
   app::add_creep_options(cli, o);
   parse(cli, args);
   o.out = out;
-  start_kokkos(o.threads);
-  const app::CreepOutcome outcome = app::run_creep_app(o, false);
+  const app::CreepOutcome outcome = run_outside_python([&] { return app::run_creep_app(o, false, start_kokkos); });
   py::dict d;
   d["summary"] = outcome.summary.dump();
   py::list time, reduced, strain, analytic, stress;

@@ -4,7 +4,8 @@
 #   CTEST_ARGS  extra arguments for ctest, e.g. "-L physics" or "-LE cuda|fuzz|sanitize"
 # Every test has one label: physics, unit, protocol (the Catch2 tests, by
 # their tags), examples (the command-line programs), build (headers, law
-# concept, package, C++20), cuda, fuzz, sanitize. "ctest --print-labels" lists them.
+# concept, package, C++20), cuda, fuzz, sanitize, python (the Python module).
+# "ctest --print-labels" lists them.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 kokkos=$("$here/scripts/setup.sh" | tail -n 1)

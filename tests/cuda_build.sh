@@ -27,7 +27,7 @@ if [[ $code -ne 0 ]]; then echo "FAIL: Kokkos with CUDA did not build"; exit 1; 
 # unoptimised host code compiles much faster. The device code is optimised
 # as ever (ptxas), so the sm_90 kernels checked below are the real ones.
 cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS=-O0 -DKokkos_ROOT="$prefix" \
-  -DCMAKE_CXX_COMPILER="$prefix/bin/nvcc_wrapper" >"$build.configure.log" 2>&1 ||
+  -DCMAKE_CXX_COMPILER="$prefix/bin/nvcc_wrapper" -DVRUT_PYTHON=OFF >"$build.configure.log" 2>&1 ||
   { cat "$build.configure.log"; echo "FAIL: configuring the CUDA build"; exit 1; }
 gpu=0
 nvidia-smi -L 2>/dev/null | grep -q '^GPU' && gpu=1

@@ -14,7 +14,7 @@ command -v clang++ >/dev/null || { echo "SKIPPED: no clang++ (apt-get install cl
 flags="-O0 -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
 cmake -S "$src" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=None -DKokkos_ROOT="$kokkos" \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DVRUT_BUILD_BENCHMARKS=OFF \
-  -DCMAKE_DISABLE_FIND_PACKAGE_MPI=ON >"$build.configure.log" 2>&1 ||
+  -DCMAKE_DISABLE_FIND_PACKAGE_MPI=ON -DVRUT_PYTHON=OFF >"$build.configure.log" 2>&1 ||
   { cat "$build.configure.log"; echo "FAIL: configuring the sanitizer build"; exit 1; }
 echo "note: MPI left out of this build on purpose (CMAKE_DISABLE_FIND_PACKAGE_MPI=ON): vrut-rutting runs here as one"
 echo "      process; the two-rank test is examples.rutting_mpi_two_ranks, in the main build"

@@ -5,7 +5,7 @@
 #include "block.hpp"
 #include "spaces.hpp"
 
-#include <vrut/protocol/energy_check.hpp>
+#include <vrut/core/energy_check.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -65,7 +65,7 @@ TEST_CASE("a blown-up run is reported with its step", "[core][instability]") {
   CHECK_NOTHROW(calm.run(3000, 0.2 * calm.critical_timestep()));
 }
 
-// The energy check (protocol/energy_check.hpp): a kicked, bonded block with
+// The energy check (core/energy_check.hpp): a kicked, bonded block with
 // no gravity and no walls keeps at most the kinetic energy of the kick,
 // however its springs trade it; an unstable time step makes more, and the
 // check sees it before any disk has jumped a diameter.

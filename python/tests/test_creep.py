@@ -14,9 +14,9 @@ SMALL_ARGS = ["--columns", "10", "--rows", "10", "--time-s", "2.0", "--stress-mp
 CLOCK = {"wall_seconds", "particle_steps_per_second"}
 
 
-def test_creep_is_the_command_lines(tmp_path):
-    cli = os.path.join(os.path.dirname(os.environ["VRUT_RUTTING"]), "vrut-creep")
-    done = subprocess.run([cli, *SMALL_ARGS, "--out", str(tmp_path / "cli")], capture_output=True, text=True)
+def test_creep_is_the_command_lines(cli, tmp_path):
+    creep_cli = os.path.join(os.path.dirname(cli), "vrut-creep")
+    done = subprocess.run([creep_cli, *SMALL_ARGS, "--out", str(tmp_path / "cli")], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     expected = json.loads((tmp_path / "cli" / "creep.json").read_text())
     run = vrut.creep(out=tmp_path / "py", **SMALL)

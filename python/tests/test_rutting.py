@@ -5,6 +5,7 @@ import os
 import signal
 import subprocess
 import threading
+import time
 
 import numpy
 import pytest
@@ -37,6 +38,9 @@ def test_same_numbers_and_files_as_the_command_line(cli, tmp_path):
     # Every double of summary.json, as the command line wrote it (JSON keeps 17 digits).
     assert without_clock(run.summary) == without_clock(expected)
     assert run.rut_depth_mm == expected["rut_depth_mm"]
+    # Regression pin (e4e7f74's vrut-rutting, before the application layer
+    # moved into the library): the same run's rut depth, to the last bit.
+    assert expected["rut_depth_mm"] == 9.44896625473758
     assert run.dynamic_stability == expected["dynamic_stability_passes_per_mm"]
     # The module's folder holds the command line's files, the curve bit for bit.
     assert (tmp_path / "py" / "deformation.csv").read_bytes() == (out / "deformation.csv").read_bytes()
@@ -57,6 +61,17 @@ def test_float_options_reach_the_run_exactly(cli, tmp_path):
     expected = json.loads((out / "summary.json").read_text())
     run = vrut.rutting(eta1=eta1, minutes=46, **SMALL)
     assert without_clock(run.summary) == without_clock(expected)
+
+
+def test_numpy_scalars_and_seed_lists():
+    # A sweep over numpy.linspace passes numpy scalars: the same run as Python's floats.
+    a = vrut.rutting(eta1=numpy.float64(60.0), minutes=numpy.int64(46), **SMALL)
+    b = vrut.rutting(eta1=60.0, minutes=46, **SMALL)
+    assert numpy.array_equal(a.deformation_mm, b.deformation_mm)
+    with pytest.raises(ValueError, match="no seeds"):
+        vrut.rutting(seeds=[], width_mm=100)
+    with pytest.raises(TypeError, match="whole numbers"):
+        vrut.rutting(seeds=[1.5], width_mm=100)
 
 
 def test_an_ensemble_equals_its_single_runs():
@@ -115,13 +130,17 @@ def test_ctrl_c_stops_cleanly_with_a_checkpoint(tmp_path):
             started.set()
             os.kill(os.getpid(), signal.SIGINT)  # as Ctrl-C would, while the loading runs
 
-    with pytest.raises(KeyboardInterrupt, match="vrut-rutting --resume"):
+    with pytest.raises(KeyboardInterrupt, match="vrut-rutting --resume") as raised:
         vrut.rutting(out=tmp_path / "stopped", progress=progress, **SMALL)
     summary = json.loads((tmp_path / "stopped" / "summary.json").read_text())
     assert summary["interrupted"] is True and summary["minutes_done"] < 60
+    assert raised.value.run.summary["minutes_done"] == summary["minutes_done"]
     assert (tmp_path / "stopped" / "checkpoint.vrut").exists()
-    # Python has its own Ctrl-C back.
+    # Python has its own Ctrl-C back: the signal now interrupts Python.
     assert signal.getsignal(signal.SIGINT) is python_handler
+    with pytest.raises(KeyboardInterrupt):
+        os.kill(os.getpid(), signal.SIGINT)
+        time.sleep(5)
 
 
 def test_one_kokkos_runtime_per_process():

@@ -28,5 +28,6 @@ def test_a_3d_specimen_has_depth():
     sp = vrut.specimen(dim=3, gradation=2, seed=1, width_mm=30, height_mm=25, sphere_radius_mm=1.5, threads=1)
     assert sp.z_mm is not None and len(sp.z_mm) == len(sp)
     width, height, depth = sp.summary["box_mm"]
+    assert (width, height) == (30, 25)
     assert sp.z_mm.min() >= 0 and sp.z_mm.max() < depth and sp.y_mm.max() < height
     assert numpy.count_nonzero(sp.stone >= 0) == sp.summary["spheres"]["in_stones"]

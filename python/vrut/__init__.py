@@ -10,7 +10,9 @@ table: a bad value raises ``ValueError`` with the command line's message.
 """
 
 import json
+import numbers
 import os
+import signal
 import sys
 import tempfile
 
@@ -39,10 +41,15 @@ def backends():
 
 
 def _text(value):
-    # repr() of a float is the shortest text that reads back to the same
-    # double, so the C++ side parses exactly the value given.
-    if isinstance(value, float):
-        return repr(value)
+    # The shortest text that reads back to the same double (repr of a Python
+    # float), so the C++ side parses exactly the value given; numpy's
+    # scalars as Python's.
+    if isinstance(value, bool):
+        return str(value)
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        return repr(float(value))
     return str(value)
 
 
@@ -71,11 +78,10 @@ class Gradation:
                                                          [float(p) for p in percent_passing], name)
         self.sieves_mm, self.percent_passing = list(sieves), list(passing)
 
-    def _option(self, folder):
-        """The --gradation text: the number, or a CSV file written to folder."""
+    def _option(self, path):
+        """The --gradation text: the number, or the table written to the CSV file path."""
         if self.builtin is not None:
             return str(self.builtin)
-        path = os.path.join(folder, self.name + ".csv")
         with open(path, "w") as f:
             f.write("sieve_mm,percent_passing\n")
             for d, p in zip(self.sieves_mm, self.percent_passing):
@@ -134,12 +140,19 @@ def _arguments(function, kwargs):
             if value:
                 args.append("--" + name)
             continue
-        if name == "seeds" and not isinstance(value, str):
-            value = ",".join(str(int(s)) for s in value)
-        if name == "image" and not isinstance(value, str):
+        if name == "seeds" and not isinstance(value, (str, numbers.Integral)):
+            seeds = list(value)
+            if not seeds:
+                raise ValueError(f"{function}(): seeds: no seeds given")
+            if not all(isinstance(s, numbers.Integral) and not isinstance(s, bool) for s in seeds):
+                raise TypeError(f"{function}(): seeds: whole numbers, or the command line's text ('1-16'), not {value!r}")
+            value = ",".join(str(int(s)) for s in seeds)
+        if name == "image" and not isinstance(value, (str, os.PathLike)):
             for path in value:
-                args += ["--image", str(path)]
+                args += ["--image", os.fspath(path)]
             continue
+        if isinstance(value, os.PathLike):
+            value = os.fspath(value)
         args += ["--" + name, _text(value)]
     return args
 
@@ -231,14 +244,21 @@ def _progress_bar(progress):
     return None, None
 
 
-def _with_gradation_and_materials(options, folder, materials=None):
+def _with_gradation_and_materials(options, folder, materials=None, out=None):
+    """The options with a Materials' merged in and a Gradation as its text: a
+    table is a CSV file in folder, or beside out (DIR.gradation-NAME.csv),
+    where it lasts as long as the results, so the run can be resumed."""
     if materials is not None:
         if not isinstance(materials, Materials):
             raise TypeError(f"materials: a vrut.Materials, not {type(materials).__name__}")
         options = {**materials.options, **options}
     g = options.get("gradation")
     if isinstance(g, Gradation):
-        options = {**options, "gradation": g._option(folder)}
+        if out is None:
+            path = os.path.join(folder, g.name + ".csv")
+        else:
+            path = os.fspath(out).rstrip("/" + os.sep) + f".gradation-{g.name}.csv"
+        options = {**options, "gradation": g._option(path)}
     return options
 
 
@@ -253,22 +273,31 @@ def rutting(out=None, progress=None, print=False, materials=None, **options):
     options: vrut-rutting's options (vrut.options()), e.g. gradation=2 (or
       a vrut.Gradation), seed=1 or seeds="1-16" (or a list), width_mm=100, dim=3.
 
-    Ctrl-C stops the run at its next sample, as on the command line; with
-    out= the partial results and a checkpoint are written there (go on with
-    vrut-rutting --resume), then KeyboardInterrupt is raised.
+    Ctrl-C stops the run at its next sample, as on the command line (one
+    that comes while the specimen is made, at the loading's first sample);
+    with out= the partial results and a checkpoint are written there (go on
+    with vrut-rutting --resume), then KeyboardInterrupt is raised, with the
+    partial results as its .run. SIGTERM likewise raises SystemExit(143).
     """
     callback, bar = _progress_bar(progress)
     try:
         with tempfile.TemporaryDirectory(prefix="vrut-") as folder:
-            args = _arguments("rutting", _with_gradation_and_materials(options, folder, materials))
+            args = _arguments("rutting", _with_gradation_and_materials(options, folder, materials, out))
             raw = _vrut.rutting(args, "" if out is None else str(out), callback, bool(print))
     finally:
         if bar is not None:
             bar.close()
     run = RuttingRun(raw)
     if run.interrupted:
+        # As the command line: the partial results (also on the exception,
+        # as .run), then Ctrl-C's KeyboardInterrupt, or SIGTERM's exit code.
         where = f"; partial results in {out}, go on with: vrut-rutting --resume {out}" if out else ""
-        raise KeyboardInterrupt(f"the run stopped at {run.summary['minutes_done']:.1f} minutes{where}")
+        text = f"the run stopped at {run.summary['minutes_done']:.1f} minutes{where}"
+        stop = SystemExit(raw["exit_code"]) if raw["exit_code"] == 128 + signal.SIGTERM else KeyboardInterrupt(text)
+        stop.run = run
+        if isinstance(stop, SystemExit):
+            sys.stderr.write("vrut: terminated (SIGTERM): " + text + "\n")
+        raise stop
     return run
 
 

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -73,8 +74,10 @@ struct CreepOutcome {
 };
 
 // Runs the creep test of these options; with o.out empty nothing is written.
-// Bad input throws std::invalid_argument. print: the command line's lines.
-inline CreepOutcome run_creep_app(CreepOptions o, bool print = true) {
+// Bad input throws std::invalid_argument. print: the command line's lines;
+// start_runtime: as in RuttingHooks (unset: the run's own Kokkos session).
+inline CreepOutcome run_creep_app(CreepOptions o, bool print = true,
+                                  const std::function<void(int)>& start_runtime = {}) {
   auto& cs = o.cs;
   cs.radius = o.radius_mm * 1e-3;
   cs.thickness = o.thickness_mm * 1e-3;
@@ -89,7 +92,9 @@ inline CreepOutcome run_creep_app(CreepOptions o, bool print = true) {
 
   std::optional<vrut::OutputDir> dir;
   if (!o.out.empty()) dir.emplace(o.out, o.force);
-  vrut::KokkosSession kokkos(o.threads);
+  std::optional<vrut::KokkosSession> kokkos;
+  if (start_runtime) start_runtime(o.threads);
+  else kokkos.emplace(o.threads);
   int used_threads = 1;
   // Reported in permille of the test; read as seconds of the (real) loading a second.
   vrut::ProgressBar bar("creep", 1000, {"test s", cs.duration / 1000.0});

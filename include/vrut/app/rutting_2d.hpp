@@ -142,7 +142,9 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   // The results, and two checkpoints (the old one stays until the new one is
   // whole) of about 1.2 kB per disk, must fit on the disk: checked now.
   if (output) output->require_space(4'000'000 + 200 * sp.disks.centers.size() + 2 * 1'200 * my_disks * session.size());
-  vrut::KokkosSession kokkos(o.threads);
+  std::optional<vrut::KokkosSession> kokkos;
+  if (hooks.start_runtime) hooks.start_runtime(o.threads);
+  else kokkos.emplace(o.threads);
   int used_threads = 1;
   // Reported in permille of the test; read as minutes of the test a second.
   vrut::ProgressBar bar(ensemble ? "loading " + cli::specimens_text(seeds.size()) : "loading", 1000,

@@ -124,7 +124,9 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   nlohmann::json stones_to_keep = nlohmann::json::object();
   // Kokkos first: an ensemble places its specimens on as many host threads
   // as the run has.
-  vrut::KokkosSession kokkos(o.threads);
+  std::optional<vrut::KokkosSession> kokkos;
+  if (hooks.start_runtime) hooks.start_runtime(o.threads);
+  else kokkos.emplace(o.threads);
   std::vector<vrut::Specimen3> specimens;
   if (stones_kept != nullptr) {
     for (std::uint64_t seed : seeds) {

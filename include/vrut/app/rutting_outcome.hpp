@@ -29,6 +29,10 @@ struct RuttingOutcome {
 struct RuttingHooks {
   std::function<void(double)> progress;  // the loading's fraction done, at every sample
   bool print = true;                     // the result's lines on stdout, as the command line prints them
+  // Starts the Kokkos runtime on these threads once the options are checked,
+  // and keeps it running after the run (the Python module's); unset: the run
+  // starts and ends its own (KokkosSession).
+  std::function<void(int threads)> start_runtime;
 };
 
 }  // namespace vrut::app

@@ -3,30 +3,36 @@
 // run stops at its next sample and writes what it has, with a checkpoint.
 #include <csignal>
 
+#include <signal.h>  // sigaction (POSIX)
+
 namespace vrut::app {
 
 inline volatile std::sig_atomic_t stop_signal = 0;
 extern "C" inline void on_stop_signal(int signal) { stop_signal = signal; }
 
 // Catches both signals while it lives, then gives them back to whoever had
-// them (the shell's default, or Python's own handler in the module).
+// them, flags and all (the shell's default, or Python's own handler in the
+// module). It leaves stop_signal as it finds it: a signal caught by an outer
+// CatchStopSignals (the Python module's, around a whole run) still counts.
 class CatchStopSignals {
  public:
   CatchStopSignals() {
-    stop_signal = 0;
-    previous_int_ = std::signal(SIGINT, on_stop_signal);
-    previous_term_ = std::signal(SIGTERM, on_stop_signal);
+    struct sigaction mine {};
+    mine.sa_handler = on_stop_signal;
+    sigemptyset(&mine.sa_mask);
+    sigaction(SIGINT, &mine, &previous_int_);
+    sigaction(SIGTERM, &mine, &previous_term_);
   }
   ~CatchStopSignals() {
-    std::signal(SIGINT, previous_int_ == SIG_ERR ? SIG_DFL : previous_int_);
-    std::signal(SIGTERM, previous_term_ == SIG_ERR ? SIG_DFL : previous_term_);
+    sigaction(SIGINT, &previous_int_, nullptr);
+    sigaction(SIGTERM, &previous_term_, nullptr);
   }
   CatchStopSignals(const CatchStopSignals&) = delete;
   CatchStopSignals& operator=(const CatchStopSignals&) = delete;
 
  private:
-  void (*previous_int_)(int) = SIG_DFL;
-  void (*previous_term_)(int) = SIG_DFL;
+  struct sigaction previous_int_ {};
+  struct sigaction previous_term_ {};
 };
 
 }  // namespace vrut::app

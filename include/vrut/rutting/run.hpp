@@ -8,7 +8,7 @@
 // definition is rutting/test.hpp, its materials rutting/materials.hpp, what
 // it measures rutting/result.hpp.
 #include <vrut/core/simulation.hpp>
-#include <vrut/protocol/energy_check.hpp>
+#include <vrut/core/energy_check.hpp>
 #include <vrut/rutting/loading.hpp>
 #include <vrut/rutting/materials.hpp>
 #include <vrut/rutting/result.hpp>

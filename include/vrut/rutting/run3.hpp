@@ -22,7 +22,7 @@
 // An ensemble runs side by side in one Simulation, with checkpoints and a
 // stop, as in 2D (run.hpp).
 #include <vrut/core/simulation.hpp>
-#include <vrut/protocol/energy_check.hpp>
+#include <vrut/core/energy_check.hpp>
 #include <vrut/rutting/loading.hpp>
 #include <vrut/rutting/materials.hpp>
 #include <vrut/rutting/result.hpp>
