@@ -205,14 +205,22 @@ py::tuple gradation(const py::object& which, const std::vector<double>& sieve_mm
   return py::make_tuple(g.name, g.sieve_mm, g.passing);
 }
 
+// A program's option table, bound to options nobody reads: for its names,
+// defaults and checks alone.
+struct OptionTable {
+  app::RunOptions run;
+  app::CreepOptions creep;
+  CLI::App cli;
+  explicit OptionTable(const std::string& program) : cli("vrut." + program) {
+    if (program == "creep") app::add_creep_options(cli, creep);
+    else app::add_run_options(cli, run);
+  }
+};
+
 // Parses without running: the options' checks alone.
 void check(const std::string& program, const std::vector<std::string>& args) {
-  app::RunOptions o;
-  app::CreepOptions c;
-  CLI::App cli("vrut." + program);
-  if (program == "creep") app::add_creep_options(cli, c);
-  else app::add_run_options(cli, o);
-  parse(cli, args);
+  OptionTable table(program);
+  parse(table.cli, args);
 }
 
 // vrut-creep with these arguments; out empty: no folder written.
@@ -244,13 +252,9 @@ py::dict creep(const std::vector<std::string>& args, const std::string& out) {
 // The options of vrut-rutting (or of vrut-creep): name (without "--"), whether it is a flag,
 // its default as text, and its help.
 py::list options(const std::string& program) {
-  app::RunOptions o;
-  app::CreepOptions c;
-  CLI::App cli("vrut." + program);
-  if (program == "creep") app::add_creep_options(cli, c);
-  else app::add_run_options(cli, o);
+  const OptionTable table(program);
   py::list out;
-  for (const CLI::Option* opt : cli.get_options()) {
+  for (const CLI::Option* opt : table.cli.get_options()) {
     const std::string name = opt->get_single_name();
     if (name == "help" || name.empty()) continue;
     py::dict d;
