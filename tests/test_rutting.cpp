@@ -456,6 +456,29 @@ TEST_CASE("the loading follows SPEC section 1", "[rutting][unit]") {
   CHECK_THROWS_WITH(bad.validate(0.3), Catch::Contains("pressure"));
 }
 
+// Across the travel the plate is the wheel's width, loaded for as long and
+// at the same pressure: the force per unit thickness is p d, not p l.
+TEST_CASE("a transverse section puts the wheel's width under the same pressure", "[rutting][unit]") {
+  vrut::WheelTracking wt;
+  wt.transverse = true;
+  CHECK(wt.plate_length() == wt.wheel_width);
+  CHECK(wt.loading_time() == vrut::WheelTracking{}.loading_time());
+  CHECK_THROWS_WITH(wt.validate(0.049), Catch::Contains("longer than the specimen"));
+  wt.minutes = 6.0;
+  wt.ds_from_minute = 4.0;
+  vrut::RuttingNumerics num = small_numerics(1e4);
+  num.samples = 30;
+  const vrut::Specimen sp = small_specimen();
+  const auto res = vrut::run_rutting<Kokkos::DefaultHostExecutionSpace>(sp, wt, {}, num);
+  const double width = sp.width * 1e-3;
+  CHECK(res.plate_x0 == Approx(0.5 * (width - 0.05)).epsilon(1e-12));
+  CHECK(res.plate_x1 == Approx(0.5 * (width + 0.05)).epsilon(1e-12));
+  // After the ramp (2 % of the test) the dead load holds the pressure.
+  for (const auto& s : res.samples)
+    if (s.minutes > 1.0) CHECK(s.plate_pressure == Approx(0.7e6).epsilon(0.02));
+  CHECK(res.deformation_final > 0.0);
+}
+
 TEST_CASE("a rutting run asked to stop ends at that sample with what it has", "[rutting][interrupt]") {
   const vrut::Specimen sp = small_specimen();
   vrut::WheelTracking wt;

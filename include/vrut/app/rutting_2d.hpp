@@ -137,7 +137,7 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
                                                   : ("gradation " + ss.gradation.name).c_str(), my_disks,
                  session.size() > 1 ? (" on rank 0 of " + std::to_string(session.size())).c_str() : (ensemble ? " in all" : ""),
                  sp.placement.aggregates.size(), ensemble ? " in the first" : "",
-                 wt.contact_length() * 1e3, wt.loading_time(), wt.loading_time() / num.shift);
+                 wt.plate_length() * 1e3, wt.loading_time(), wt.loading_time() / num.shift);
 
   // The results, and two checkpoints (the old one stays until the new one is
   // whole) of about 1.2 kB per disk, must fit on the disk: checked now.
@@ -241,6 +241,8 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   j["threads"] = used_threads;
   j["particle_steps_per_second"] = disks * static_cast<double>(res.steps) / wall_seconds;
   j["contact_length_mm"] = wt.contact_length() * 1e3;
+  j["section"] = wt.transverse ? "transverse" : "longitudinal";
+  j["plate_mm"] = wt.plate_length() * 1e3;
   j["loading_time_s"] = wt.loading_time();
   // For an ensemble: the first specimen's bonds, contacts and description.
   add_shared_summary(j, res, report, interrupted, minutes_done);

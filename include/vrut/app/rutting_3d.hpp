@@ -82,6 +82,9 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   if (o.so.disk_radius_mm != defaults.so.disk_radius_mm) only_2d("--disk-radius-mm");
   if (o.so.placement != defaults.so.placement) only_2d("--placement");
   if (o.so.binder_film_mm != defaults.so.binder_film_mm) only_2d("--binder-film-mm");
+  if (o.wt.transverse)
+    throw std::invalid_argument("--section transverse is for 2D sections; the 3D plate already spans the wheel's "
+                                "contact length along the travel and the box's depth across it");
   if (o.mat.mastic_aggregate_factor != defaults.mat.mastic_aggregate_factor)
     throw std::invalid_argument("--mastic-aggregate-factor is the 2D model's (fitted on 2# with the films between "
                                 "stones); in 3D give --mastic-aggregate-factor-3d");

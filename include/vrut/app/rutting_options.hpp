@@ -33,6 +33,7 @@ struct RunOptions {
   vrut::RuttingMaterials mat;
   vrut::RuttingNumerics num;
   std::string backend = "openmp", out = "out/rutting", conversion = "seed", stone_film = "per-contact", seeds_text;
+  std::string section = "longitudinal";  // --section (wt.transverse)
   std::string least_film = "none";  // --least-film: none, binder or micrometres (least_film_m)
   int threads = 0;
   bool force = false, exact_stones = false;
@@ -64,6 +65,7 @@ struct RunOptions {
     wt.pressure = pressure_mpa * 1e6;
     wt.wheel_width = wheel_width_mm * 1e-3;
     wt.travel = travel_mm * 1e-3;
+    wt.transverse = section == "transverse";
   }
 };
 
@@ -173,6 +175,11 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--wheel-width-mm", o.wheel_width_mm, "wheel width d (= disk thickness t)")
       ->check(cli::finite_positive())->capture_default_str()
       ->group("Loading");
+  app.add_option("--section", o.section,
+                 "2D: the section along the wheel's travel (the method's; the plate is the contact length) or across "
+                 "it (transverse: the plate is the wheel's width; an experiment of docs/validation.md, round four, "
+                 "not the model)")
+      ->check(CLI::IsMember({"longitudinal", "transverse"}))->capture_default_str()->group("Loading");
   app.add_option("--travel-mm", o.travel_mm, "wheel travel")->check(cli::finite_positive())->capture_default_str()->group("Loading");
   app.add_option("--passes-per-minute", wt.passes_per_minute, "N")->check(cli::finite_positive())->capture_default_str()->group("Loading");
   app.add_option("--minutes", wt.minutes, "test duration (more than the DS window's start, 45)")

@@ -232,7 +232,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference, settling);
 
   // The plates, each on the highest disk under it; the load brings it down.
-  const double l = wt.contact_length();
+  const double l = wt.plate_length();
   const LoadingPlan plan = loading_plan(wt, num, dt);
   const double t_load = plan.t_load;
   const long steps = plan.steps;
@@ -273,7 +273,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
   };
   for (int e = 0; e < count; ++e) results[e].skeleton.films_start = skeleton(e).films;
   auto ramp_to = [&](double fraction) {
-    const double stress = wt.plate_force() * fraction / (l * t);
+    const double stress = wt.plate_force() * fraction / (wt.contact_length() * t);  // the pressure, either section
     for (int e = 0; e < count; ++e)
       sim.set_controller(plate[e], LoadControl::for_stress(stress, l, t, plate_mass[e], 0.0));
   };

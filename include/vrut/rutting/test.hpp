@@ -19,12 +19,21 @@ struct WheelTracking {
   double passes_per_minute = 42.0;
   double minutes = 60.0;
   double ds_from_minute = 45.0;      // DS between this minute and the end
+  // The 2D section: along the wheel's travel (the method's: the plate is the
+  // tyre's contact length l) or across it (the plate is the wheel's width d,
+  // so the mix can flow out sideways from under the wheel). A point under
+  // the wheel is loaded for the same time either way. The disks keep the
+  // thickness t = d in both: every force, stiffness and mass of the section
+  // scales with t, so t does not enter the answer.
+  bool transverse = false;
 
   double contact_length() const { return wheel_mass * gravity / (pressure * wheel_width); }
   double loading_time() const { return minutes * 60.0 * contact_length() / travel; }  // s, cumulative under the wheel
   // The passes of the DS window, (t2 - t1) N C1 C2 with C1 = C2 = 1.
   double ds_window_passes() const { return (minutes - ds_from_minute) * passes_per_minute; }
   double plate_force() const { return pressure * contact_length() * wheel_width; }
+  // The plate's length in the section: l along the travel, d across it.
+  double plate_length() const { return transverse ? wheel_width : contact_length(); }
 
   void validate(double section_width_m) const {
     auto positive = [](double v, const char* what) {
@@ -44,8 +53,8 @@ struct WheelTracking {
                     "dynamic stability starts", minutes, ds_from_minute);
       throw std::invalid_argument(text);
     }
-    if (!(contact_length() < section_width_m))
-      throw std::invalid_argument("the loading plate (" + std::to_string(contact_length() * 1e3) +
+    if (!(plate_length() < section_width_m))
+      throw std::invalid_argument("the loading plate (" + std::to_string(plate_length() * 1e3) +
                                   " mm) is longer than the specimen (" + std::to_string(section_width_m * 1e3) + " mm)");
   }
 };
