@@ -37,13 +37,14 @@ if [[ $gpu -eq 1 || ${VRUT_CUDA_TESTS:-0} == 1 ]]; then targets+=(vrut-tests) ex
 # Eigen's headers warn under nvcc; only errors matter here.
 cmake --build "$build" --target "${targets[@]}" 2>&1 | grep -E "error|\[[0-9]+/[0-9]+\]"
 [[ ${PIPESTATUS[0]} -eq 0 ]] || { echo "FAIL: the CUDA build of vrut"; exit 1; }
-# The device code really is there: vrut's contact-force kernel, compiled for
-# sm_90, in 2D and in 3D (Dim3 in its mangled name), in each binary's fat binary.
+# The device code really is there: vrut's contact-force kernel (core/force_pass.hpp),
+# compiled for sm_90, in 2D and in 3D (Dim2, Dim3 in its mangled name), in each
+# binary's fat binary.
 for exe in "${exes[@]}"; do
   objcopy -O binary --only-section=.nv_fatbin "$build/$exe" "$build/fatbin.bin" &&
     strings "$build/fatbin.bin" >"$build/fatbin.txt" && grep -q sm_90 "$build/fatbin.txt" &&
-    grep -q 'vrut10Simulation.*Dim2.*contact_forces' "$build/fatbin.txt" &&
-    grep -q 'vrut10Simulation.*Dim3.*contact_forces' "$build/fatbin.txt" ||
+    grep -q 'vrut14contact_forces.*Dim2' "$build/fatbin.txt" &&
+    grep -q 'vrut14contact_forces.*Dim3' "$build/fatbin.txt" ||
     { echo "FAIL: no sm_90 device code for vrut's 2D and 3D kernels in $exe"; exit 1; }
 done
 echo "PASS: ${targets[*]} compile and link with CUDA for sm_90"

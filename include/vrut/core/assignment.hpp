@@ -3,6 +3,8 @@
 // Host-side table; the Simulation copies it to the device once.
 #include <vrut/contact/concept.hpp>
 
+#include <Kokkos_Core.hpp>
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -63,5 +65,22 @@ class AssignmentTable {
   std::vector<params_type> params_;
   std::vector<char> set_;
 };
+
+// The table's parameters into `view` (groups x groups, on the device), for
+// the law in its engine form; returns each pair's stiffness (-1: not set),
+// row by row, for the time step.
+template <class Law, class Spec, class View>
+std::vector<double> upload_table(const AssignmentTable<Spec>& table, const View& view) {
+  auto host = Kokkos::create_mirror_view(view);
+  std::vector<double> stiffness(static_cast<std::size_t>(table.groups()) * table.groups(), -1.0);
+  for (int a = 0; a < table.groups(); ++a)
+    for (int b = 0; b < table.groups(); ++b)
+      if (table.is_set(a, b)) {
+        host(a, b) = table(a, b);
+        stiffness[static_cast<std::size_t>(a) * table.groups() + b] = Law::stiffness(table(a, b));
+      }
+  Kokkos::deep_copy(view, host);
+  return stiffness;
+}
 
 }  // namespace vrut

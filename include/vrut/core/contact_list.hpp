@@ -12,6 +12,8 @@
 // image. Positions are not wrapped: a particle keeps its continuous path,
 // and only its cell is taken modulo the box.
 #include <vrut/contact/concept.hpp>
+#include <vrut/core/cell_grid.hpp>
+#include <vrut/core/contact_load.hpp>
 #include <vrut/data/dimension.hpp>
 #include <vrut/data/particles.hpp>
 #include <vrut/neighbor/periodic_box3.hpp>
@@ -25,14 +27,6 @@
 
 namespace vrut {
 
-// Force of one contact on its second particle, and the moments on both.
-template <class D>
-struct ContactLoadIn {
-  typename D::vector force;
-  typename D::spin moment_first{}, moment_second{};
-};
-using ContactLoad = ContactLoadIn<Dim2>;
-
 template <class Law, class ExecutionSpace, class D = Dim2>
 class ContactList {
  public:
@@ -42,6 +36,7 @@ class ContactList {
   using vector = typename D::vector;
   using particles_type = Particles<memory_space, D>;
   using box_type = PeriodicBox<D>;
+  using grid_type = CellGrid<D, ExecutionSpace>;
   static constexpr int dims = D::value;
 
   Kokkos::View<int**, memory_space> partner;  // (disk, slot) -> partner j > disk
@@ -56,6 +51,7 @@ class ContactList {
   int most_partners = 0, most_reverse = 0;  // the longest rows at the last build
   int specimens = 1;  // layers of cells, one per specimen (Particles::specimen)
   long builds = 0;
+  grid_type grid;  // public only because device lambdas cannot live in private members
 
   // Rebuilds from the current positions. Pairs that are bonded in the old
   // list are kept whatever their distance, with their state.
@@ -71,7 +67,7 @@ class ContactList {
       count = decltype(count)("count", n);
       state = decltype(state)("contact_state", n, capacity);
     }
-    build_cells(space, ps, skin);
+    grid.build(space, ps, skin, box, specimens);
     // Fill again (once or twice) where the rows came out too short or too long.
     for (;;) {
       most_partners = fill(space, ps, skin);
@@ -106,100 +102,22 @@ class ContactList {
     return m;
   }
 
-  // Cells, public only because device lambdas cannot live in private members.
-  Kokkos::View<int*, memory_space> cell_of, cell_start, cell_particles;
-  int cells[3] = {1, 1, 1};  // per axis, per specimen layer (the third is 1 in 2D)
-  double cell_width[3] = {0.0, 0.0, 0.0}, origin[3] = {0.0, 0.0, 0.0};
-
-  void build_cells(const execution_space& space, const particles_type& ps, double skin) {
-    const int n = static_cast<int>(ps.size());
-    auto x = ps.position;
-    auto r = ps.radius;
-    auto specimen = ps.specimen;
-    double low[3] = {0.0, 0.0, 0.0}, high[3] = {0.0, 0.0, 0.0}, rmax = 0.0;
-    for (int k = 0; k < dims; ++k) {
-      Kokkos::parallel_reduce("vrut::bounds_min", Kokkos::RangePolicy<execution_space>(space, 0, n),
-          KOKKOS_LAMBDA(const int i, double& a) { if (component(x(i), k) < a) a = component(x(i), k); },
-          Kokkos::Min<double>(low[k]));
-      Kokkos::parallel_reduce("vrut::bounds_max", Kokkos::RangePolicy<execution_space>(space, 0, n),
-          KOKKOS_LAMBDA(const int i, double& a) { if (component(x(i), k) > a) a = component(x(i), k); },
-          Kokkos::Max<double>(high[k]));
-      if (!std::isfinite(low[k] + high[k]))
-        throw std::runtime_error("vrut: a particle position is not finite (time step too large?)");
-    }
-    Kokkos::parallel_reduce("vrut::bounds_rmax", Kokkos::RangePolicy<execution_space>(space, 0, n),
-        KOKKOS_LAMBDA(const int i, double& a) { if (r(i) > a) a = r(i); }, Kokkos::Max<double>(rmax));
-    const double reach = 2.0 * rmax + skin;
-    // Along a periodic axis the cells tile the box; along the others they
-    // span the particles.
-    auto span = [&](int k) { return box.periodic[k] ? box.length(k) : high[k] - low[k]; };
-    auto count_along = [&](int k, double size) {
-      return box.periodic[k] ? static_cast<int>(span(k) / size) : static_cast<int>(span(k) / size) + 1;
-    };
-    double size = reach;
-    // Keep the grid at most ~4 cells per particle, whatever the spread.
-    const double per_layer = static_cast<double>(n) / (specimens > 0 ? specimens : 1);
-    for (;;) {
-      double total = 1.0;
-      bool periodic_would_fall_short = false;  // below 3 cells, had the cells doubled
-      for (int k = 0; k < dims; ++k) {
-        total *= box.periodic[k] ? span(k) / size : span(k) / size + 1.0;
-        periodic_would_fall_short = periodic_would_fall_short || (box.periodic[k] && count_along(k, 2.0 * size) < 3);
-      }
-      if (total <= 4.0 * per_layer + 16.0 || periodic_would_fall_short) break;
-      size *= 2.0;
-    }
-    for (int k = 0; k < dims; ++k) {
-      cells[k] = count_along(k, size);
-      if (box.periodic[k] && cells[k] < 3)
-        throw std::invalid_argument("vrut: a periodic axis must be at least 3 contact reaches long (" +
-                                    std::to_string(3.0 * reach) + " m here; the box has " +
-                                    std::to_string(span(k)) + " m)");
-      cell_width[k] = box.periodic[k] ? span(k) / cells[k] : size;
-      origin[k] = box.periodic[k] ? component(box.low, k) : low[k];
-    }
-    const int ncells = cells[0] * cells[1] * cells[2] * (specimens > 0 ? specimens : 1);
-
-    cell_of = Kokkos::View<int*, memory_space>("cell_of", n);
-    cell_start = Kokkos::View<int*, memory_space>("cell_start", ncells + 1);
-    cell_particles = Kokkos::View<int*, memory_space>("cell_particles", n);
-    Kokkos::View<int*, memory_space> fill("cell_fill", ncells);
-    auto cof = cell_of;
-    auto start = cell_start;
-    auto members = cell_particles;
-    const int cx = cells[0], cy = cells[1], cz = cells[2];
-    const double ox = origin[0], oy = origin[1], oz = origin[2];
-    const double wx = cell_width[0], wy = cell_width[1], wz = cell_width[2];
-    const bool px = box.periodic[0], py = box.periodic[1], pz = dims == 3 && box.periodic[dims - 1];
-    Kokkos::parallel_for("vrut::cell_count", Kokkos::RangePolicy<execution_space>(space, 0, n),
-        KOKKOS_LAMBDA(const int i) {
-          const int ix = cell_index(component(x(i), 0), ox, wx, cx, px);
-          const int iy = cell_index(component(x(i), 1), oy, wy, cy, py);
-          const int iz = dims == 3 ? cell_index(component(x(i), 2), oz, wz, cz, pz) : 0;
-          cof(i) = ((specimen(i) * cz + iz) * cy + iy) * cx + ix;
-          Kokkos::atomic_add(&start(cof(i) + 1), 1);  // atomic_increment is deprecated in Kokkos 4
-        });
-    Kokkos::parallel_scan("vrut::cell_scan", Kokkos::RangePolicy<execution_space>(space, 1, ncells + 1),
-        KOKKOS_LAMBDA(const int c, int& partial, const bool final) {
-          partial += start(c);
-          if (final) start(c) = partial;
-        });
-    Kokkos::parallel_for("vrut::cell_fill", Kokkos::RangePolicy<execution_space>(space, 0, n),
-        KOKKOS_LAMBDA(const int i) {
-          const int c = cof(i);
-          members(start(c) + Kokkos::atomic_fetch_add(&fill(c), 1)) = i;
-        });
-  }
-
-  // The cell of coordinate c along an axis: wrapped around a periodic one,
-  // clamped to the grid along the others.
-  KOKKOS_INLINE_FUNCTION static int cell_index(double c, double origin, double width, int cells, bool periodic) {
-    if (periodic) {
-      int k = static_cast<int>(floor((c - origin) / width)) % cells;
-      return k < 0 ? k + cells : k;
-    }
-    const int k = static_cast<int>((c - origin) / width);
-    return k < 0 ? 0 : (k >= cells ? cells - 1 : k);
+  // The list's part of a checkpoint (core/simulation.hpp, visit_state); the
+  // cell grid is rebuilt with the list.
+  template <class Archive>
+  void visit(Archive& a) {
+    a.view("contact_partner", partner);
+    a.view("contact_count", count);
+    a.view("contact_state", state);
+    a.view("contact_load", load);
+    a.view("contact_reverse", reverse);
+    a.view("contact_reverse_count", reverse_count);
+    a.view("position_at_build", position_at_build);
+    a.value("contact_capacity", capacity);
+    a.value("contact_reverse_capacity", reverse_capacity);
+    a.value("contact_most_partners", most_partners);
+    a.value("contact_most_reverse", most_reverse);
+    a.value("contact_builds", builds);
   }
 
   // Fills a new partner list; returns the largest count (> capacity: redo larger).
@@ -215,10 +133,10 @@ class ContactList {
     auto x = ps.position;
     auto r = ps.radius;
     auto body = ps.body;
-    auto cof = cell_of;
-    auto start = cell_start;
-    auto members = cell_particles;
-    const int cx = cells[0], cy = cells[1], cz = cells[2];
+    auto cof = grid.cell_of;
+    auto start = grid.cell_start;
+    auto members = grid.cell_particles;
+    const int cx = grid.cells[0], cy = grid.cells[1], cz = grid.cells[2];
     const bool px = box.periodic[0], py = box.periodic[1], pz = dims == 3 && box.periodic[dims - 1];
     const box_type space_box = box;
     int needed = 0;
@@ -229,13 +147,13 @@ class ContactList {
           const int layer = cof(i) / (cx * cy * cz);
           const int reach_z = dims == 3 ? 1 : 0;
           for (int dz = -reach_z; dz <= reach_z; ++dz) {
-            const int zz = wrap_or_skip(iz + dz, cz, pz);
+            const int zz = grid_type::wrap_or_skip(iz + dz, cz, pz);
             if (zz < 0) continue;
             for (int dy = -1; dy <= 1; ++dy) {
-              const int yy = wrap_or_skip(iy + dy, cy, py);
+              const int yy = grid_type::wrap_or_skip(iy + dy, cy, py);
               if (yy < 0) continue;
               for (int dx = -1; dx <= 1; ++dx) {
-                const int xx = wrap_or_skip(ix + dx, cx, px);
+                const int xx = grid_type::wrap_or_skip(ix + dx, cx, px);
                 if (xx < 0) continue;
                 const int c = ((layer * cz + zz) * cy + yy) * cx + xx;
                 for (int m = start(c); m < start(c + 1); ++m) {
@@ -291,13 +209,6 @@ class ContactList {
     state = new_state;
     load = Kokkos::View<ContactLoadIn<D>**, memory_space>("contact_load", n, cap);
     return needed;
-  }
-
-  // A neighbour cell's index along an axis: wrapped on a periodic one, -1
-  // past the grid's edge on the others.
-  KOKKOS_INLINE_FUNCTION static int wrap_or_skip(int k, int cells, bool periodic) {
-    if (periodic) return k < 0 ? k + cells : (k >= cells ? k - cells : k);
-    return k < 0 || k >= cells ? -1 : k;
   }
 
   int fill_reverse(const execution_space& space, int n) {
