@@ -21,7 +21,7 @@
 #include <vrut/analysis/seeds_csv.hpp>
 #include <vrut/analysis/standard_ds.hpp>
 #include <vrut/analysis/statistics.hpp>
-#include <vrut/rutting/test.hpp>
+#include <vrut/protocol/rutting/test.hpp>
 
 #include <CLI/CLI.hpp>
 

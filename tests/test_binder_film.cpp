@@ -1,6 +1,6 @@
 // The binder film from a mix's volumetrics (specimen/binder_film.hpp), and
-// the least film between stones it sets (rutting/materials.hpp).
-#include <vrut/rutting/materials.hpp>
+// the least film between stones it sets (protocol/rutting/materials.hpp).
+#include <vrut/protocol/rutting/materials.hpp>
 #include <vrut/specimen/binder_film.hpp>
 
 #include <catch2/catch.hpp>

@@ -1,10 +1,10 @@
-// The film between stones in 3D (rutting/run3.hpp, the 2D film per contact
+// The film between stones in 3D (protocol/rutting/run3.hpp, the 2D film per contact
 // carried into 3D): the distance to a stone's surface against a cube worked
 // by hand, each stone sphere's reach against an independent measure, and
 // the 3D contact table against the mastic's and the stones' rules.
 #include "small_box3.hpp"
 
-#include <vrut/rutting/run3.hpp>
+#include <vrut/protocol/rutting/run3.hpp>
 #include <vrut/specimen/stone_reach3.hpp>
 
 #include <catch2/catch.hpp>

@@ -1,11 +1,11 @@
-// The 3D rutting run's own checks (rutting/run3.hpp): a small box of 2#
+// The 3D rutting run's own checks (protocol/rutting/run3.hpp): a small box of 2#
 // pinned, an ensemble equal to its single runs, Serial = OpenMP, and a
 // sphere outside its mould.
 #include "openmp_threads.hpp"
 #include "rutting_checks.hpp"
 #include "small_box3.hpp"
 
-#include <vrut/rutting/run3.hpp>
+#include <vrut/protocol/rutting/run3.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// The skeleton's diagnostics (rutting/skeleton.hpp) on a case worked by
+// The skeleton's diagnostics (protocol/rutting/skeleton.hpp) on a case worked by
 // hand: three columns of 1 mm disks standing on the floor under gravity,
 // cut between their second and third disks. At rest each column passes
 // down, across the cut, the weight of what stands above the cut in it:
@@ -12,8 +12,8 @@
 #include "spaces.hpp"
 
 #include <vrut/core/simulation.hpp>
-#include <vrut/rutting/materials.hpp>
-#include <vrut/rutting/skeleton.hpp>
+#include <vrut/protocol/rutting/materials.hpp>
+#include <vrut/protocol/rutting/skeleton.hpp>
 #include <vrut/servo/servo.hpp>
 
 #include <catch2/catch.hpp>

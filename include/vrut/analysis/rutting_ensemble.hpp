@@ -4,8 +4,8 @@
 // DS, and the mean deformation curve with its own DS (robust where single
 // specimens barely deform in the DS window). Host-only.
 #include <vrut/analysis/statistics.hpp>
-#include <vrut/rutting/result.hpp>
-#include <vrut/rutting/test.hpp>
+#include <vrut/protocol/rutting/result.hpp>
+#include <vrut/protocol/rutting/test.hpp>
 
 #include <algorithm>
 #include <stdexcept>

@@ -115,7 +115,7 @@ struct SpecimenFacts {
 inline nlohmann::json to_json(const vrut::RuttingResult& r, const SpecimenFacts& f) {
   std::vector<std::uint8_t> samples(r.samples.size() * sizeof(vrut::RuttingSample));
   if (!samples.empty()) std::memcpy(samples.data(), r.samples.data(), samples.size());
-  // The skeleton record is plain numbers (rutting/skeleton_record.hpp): its bytes travel as they are.
+  // The skeleton record is plain numbers (protocol/rutting/skeleton_record.hpp): its bytes travel as they are.
   static_assert(std::is_trivially_copyable_v<vrut::SkeletonRecord>);
   std::vector<std::uint8_t> skeleton(sizeof(vrut::SkeletonRecord));
   std::memcpy(skeleton.data(), &r.skeleton, skeleton.size());

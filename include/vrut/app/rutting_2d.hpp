@@ -1,5 +1,5 @@
 #pragma once
-// The 2D test (rutting/run.hpp) of one section or an ensemble (--seeds, or
+// The 2D test (protocol/rutting/run.hpp) of one section or an ensemble (--seeds, or
 // sections from images), shared among MPI ranks, with checkpoints, and its
 // outputs: what vrut-rutting and the Python module run in 2D.
 #include "cli.hpp"

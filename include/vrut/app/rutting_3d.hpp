@@ -1,5 +1,5 @@
 #pragma once
-// vrut-rutting --dim 3: the 3D test (rutting/run3.hpp) of one specimen or an
+// vrut-rutting --dim 3: the 3D test (protocol/rutting/run3.hpp) of one specimen or an
 // ensemble (--seeds), with checkpoints and --resume, and its outputs. What
 // 3D does not have (images, the method's bonded stones, the mean film, the
 // 2D conversions, MPI) is refused by name.
@@ -22,7 +22,7 @@
 #include <vrut/io/progress.hpp>
 #include <vrut/io/stones3_state.hpp>
 #include <vrut/io/vtk.hpp>
-#include <vrut/rutting/run3.hpp>
+#include <vrut/protocol/rutting/run3.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -4,7 +4,7 @@
 // specimen's result, the report's numbers, and summary.json as written.
 #include "rutting_report.hpp"
 
-#include <vrut/rutting/result.hpp>
+#include <vrut/protocol/rutting/result.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -6,7 +6,7 @@
 #include <vrut/analysis/standard_ds.hpp>
 #include <vrut/analysis/statistics.hpp>
 #include <vrut/io/vtk.hpp>
-#include <vrut/rutting/result.hpp>
+#include <vrut/protocol/rutting/result.hpp>
 #include <vrut/specimen/specimen.hpp>
 
 #include <nlohmann/json.hpp>

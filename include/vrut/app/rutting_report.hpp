@@ -12,8 +12,8 @@
 #include <vrut/analysis/standard_ds.hpp>
 #include <vrut/io/output_dir.hpp>
 #include <vrut/io/plot.hpp>
-#include <vrut/rutting/result.hpp>
-#include <vrut/rutting/test.hpp>
+#include <vrut/protocol/rutting/result.hpp>
+#include <vrut/protocol/rutting/test.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -204,7 +204,7 @@ void add_shared_summary(nlohmann::json& j, const RunFacts& res, const RuttingRep
   j["steps"] = res.steps;
   j["reduced_dt_s"] = res.dt;
   // Which class of contact sets the step, and how far the next trails it
-  // (their sqrt(m / k), before the safety factor; rutting/timestep_report.hpp).
+  // (their sqrt(m / k), before the safety factor; protocol/rutting/timestep_report.hpp).
   if (res.time_step.known())
     j["time_step"] = {{"set_by", res.time_step.set_by},
                       {"sqrt_m_over_k_s", res.time_step.step},

@@ -1,5 +1,5 @@
 #pragma once
-// vrut-rutting's report of what holds each specimen up (rutting/skeleton.hpp):
+// vrut-rutting's report of what holds each specimen up (protocol/rutting/skeleton.hpp):
 // the load path across a cut at half height under the plate, by class of
 // contact, early (5 min) and at the end; the stones' films; the stones
 // touching per stone; the late creep. In summary.json, seeds.csv and
@@ -8,7 +8,7 @@
 
 #include <vrut/io/output_dir.hpp>
 #include <vrut/io/plot.hpp>
-#include <vrut/rutting/result.hpp>
+#include <vrut/protocol/rutting/result.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -31,7 +31,7 @@ namespace vrut {
 
 // 2 (2026-12-03): the loading's time step kept, and checked on resume.
 // 3 (2026-12-04): each specimen's skeleton record (the films at the start,
-// the early load path: rutting/skeleton_record.hpp).
+// the early load path: protocol/rutting/skeleton_record.hpp).
 inline constexpr int checkpoint_format = 3;
 inline constexpr const char* checkpoint_magic = "vrut checkpoint\n";
 

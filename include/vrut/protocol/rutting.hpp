@@ -1,8 +1,8 @@
 #pragma once
 // The whole virtual rutting test in one include: its definition
-// (rutting/test.hpp), material model (rutting/materials.hpp), measurements
-// (rutting/result.hpp) and run (rutting/run.hpp).
-#include <vrut/rutting/materials.hpp>
-#include <vrut/rutting/result.hpp>
-#include <vrut/rutting/run.hpp>
-#include <vrut/rutting/test.hpp>
+// (protocol/rutting/test.hpp), material model (protocol/rutting/materials.hpp), measurements
+// (protocol/rutting/result.hpp) and run (protocol/rutting/run.hpp).
+#include <vrut/protocol/rutting/materials.hpp>
+#include <vrut/protocol/rutting/result.hpp>
+#include <vrut/protocol/rutting/run.hpp>
+#include <vrut/protocol/rutting/test.hpp>

@@ -172,7 +172,7 @@ inline std::vector<int> stone_bodies(const Specimen& sp) {
 // What sets a contact table's stiffnesses: the mastic's micro-parameter
 // rule and the length it multiplies E by (the disk width t in 2D; the sphere
 // diameter d in 3D, where the FCC rule carries the lattice's factor), the
-// length the stones' spring takes (t in 2D; d / c in 3D, rutting/run3.hpp),
+// length the stones' spring takes (t in 2D; d / c in 3D, protocol/rutting/run3.hpp),
 // and the particle diameter, which sizes the films between stones.
 struct RuttingTableScales {
   MicroConversion conversion;

@@ -1,9 +1,9 @@
 #pragma once
 // What the rutting test measures: the deformation curve, the snapshots,
 // and the rut depth and dynamic stability worked out from the curve.
-#include <vrut/rutting/skeleton_record.hpp>
-#include <vrut/rutting/test.hpp>
-#include <vrut/rutting/timestep_report.hpp>
+#include <vrut/protocol/rutting/skeleton_record.hpp>
+#include <vrut/protocol/rutting/test.hpp>
+#include <vrut/protocol/rutting/timestep_report.hpp>
 
 #include <cmath>
 #include <cstddef>
@@ -41,7 +41,7 @@ struct RuttingResult {
   // At the end: the stones holding disks, and the pairs of them that touch
   // (some disk of one overlaps some disk of the other): the skeleton.
   int stones = 0, stone_pairs_touching = 0;
-  SkeletonRecord skeleton;                 // what holds the specimen up (rutting/skeleton.hpp)
+  SkeletonRecord skeleton;                 // what holds the specimen up (protocol/rutting/skeleton.hpp)
   bool interrupted = false;                // stopped early on request: the samples so far, no DS
   long steps = 0;
   double dt = 0.0, wall_seconds = 0.0;

@@ -5,16 +5,16 @@
 // length l = m g / (p d) at mid-span, servo-controlled to the pressure p ->
 // loading for the cumulative time T = 60 min * l / travel, reduced by
 // alpha_T -> deformation curve, rut depth, dynamic stability. The test's
-// definition is rutting/test.hpp, its materials rutting/materials.hpp, what
-// it measures rutting/result.hpp.
+// definition is protocol/rutting/test.hpp, its materials protocol/rutting/materials.hpp, what
+// it measures protocol/rutting/result.hpp.
 #include <vrut/core/simulation.hpp>
 #include <vrut/core/energy_check.hpp>
-#include <vrut/rutting/loading.hpp>
-#include <vrut/rutting/materials.hpp>
-#include <vrut/rutting/result.hpp>
-#include <vrut/rutting/skeleton.hpp>
-#include <vrut/rutting/test.hpp>
-#include <vrut/rutting/timestep_report.hpp>
+#include <vrut/protocol/rutting/loading.hpp>
+#include <vrut/protocol/rutting/materials.hpp>
+#include <vrut/protocol/rutting/result.hpp>
+#include <vrut/protocol/rutting/skeleton.hpp>
+#include <vrut/protocol/rutting/test.hpp>
+#include <vrut/protocol/rutting/timestep_report.hpp>
 #include <vrut/servo/servo.hpp>
 #include <vrut/specimen/colouring.hpp>
 #include <vrut/specimen/specimen.hpp>
@@ -260,7 +260,7 @@ std::vector<RuttingResult> run_rutting_ensemble(const std::vector<Specimen>& spe
     plate[e] = sim.add_wall(Wall{{res.plate_x1, top[e]}, {res.plate_x0, top[e]}, {}}, wall_law,
                             LoadControl::for_stress(0.0, l, t, plate_mass[e], 0.0), e);
   }
-  // The skeleton (rutting/skeleton.hpp): cut half way between the floor and
+  // The skeleton (protocol/rutting/skeleton.hpp): cut half way between the floor and
   // the plate where it is now (a deep rut brings the plate near the
   // specimen's first mid-height), under the plate.
   auto skeleton = [&](int e) {

@@ -4,8 +4,8 @@
 // periodic along its depth, settled under gravity, then loaded by a plate
 // of the contact length l, as deep as the specimen, carrying p l depth as a
 // dead load, for the cumulative time under the wheel reduced by alpha_T.
-// The same test definition (rutting/test.hpp), materials (rutting/
-// materials.hpp) and measurements (rutting/result.hpp) as in 2D, with:
+// The same test definition (protocol/rutting/test.hpp), materials (rutting/
+// materials.hpp) and measurements (protocol/rutting/result.hpp) as in 2D, with:
 //   - the mastic's Burger's contacts by the FCC lattice's rule
 //     (MicroConversion::fcc_lattice; the sphere diameter d where 2D takes
 //     the disk width t), scaled by mastic_aggregate_factor between mastic
@@ -23,13 +23,13 @@
 // stop, as in 2D (run.hpp).
 #include <vrut/core/simulation.hpp>
 #include <vrut/core/energy_check.hpp>
-#include <vrut/rutting/loading.hpp>
-#include <vrut/rutting/materials.hpp>
-#include <vrut/rutting/result.hpp>
-#include <vrut/rutting/run.hpp>
-#include <vrut/rutting/skeleton.hpp>
-#include <vrut/rutting/test.hpp>
-#include <vrut/rutting/timestep_report.hpp>
+#include <vrut/protocol/rutting/loading.hpp>
+#include <vrut/protocol/rutting/materials.hpp>
+#include <vrut/protocol/rutting/result.hpp>
+#include <vrut/protocol/rutting/run.hpp>
+#include <vrut/protocol/rutting/skeleton.hpp>
+#include <vrut/protocol/rutting/test.hpp>
+#include <vrut/protocol/rutting/timestep_report.hpp>
 #include <vrut/servo/servo.hpp>
 #include <vrut/specimen/specimen3.hpp>
 #include <vrut/specimen/stone_reach3.hpp>
@@ -220,7 +220,7 @@ std::vector<RuttingResult3> run_rutting_ensemble3(const std::vector<Specimen3>& 
                               LoadControl::for_stress(0.0, l, depth, plate_mass, 0.0), e);
     }
   }
-  // The skeleton (rutting/skeleton.hpp): cut half way between the floor and
+  // The skeleton (protocol/rutting/skeleton.hpp): cut half way between the floor and
   // the plate where it is now, under the plate (run.hpp).
   auto skeleton = [&](int e) {
     SkeletonCut cut;

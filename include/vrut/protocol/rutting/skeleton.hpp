@@ -23,8 +23,8 @@
 // alone (the contact's point between the plate's ends), as measured here,
 // the cut is not a closed free body: the load spreads sideways past the
 // plate's ends. The shares are of what crosses under the plate.
-#include <vrut/rutting/materials.hpp>
-#include <vrut/rutting/skeleton_record.hpp>
+#include <vrut/protocol/rutting/materials.hpp>
+#include <vrut/protocol/rutting/skeleton_record.hpp>
 #include <vrut/specimen/specimen.hpp>
 
 #include <Kokkos_Core.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// What a rutting run records of its skeleton (rutting/skeleton.hpp measures
+// What a rutting run records of its skeleton (protocol/rutting/skeleton.hpp measures
 // it): the load path across a cut under the plate by class of contact, and
 // the stones' film census, when the loading starts, early and at the end.
 #include <array>

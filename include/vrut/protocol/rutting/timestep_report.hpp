@@ -6,7 +6,7 @@
 // disks of one stone colour in 2D, which never meet with rigid stones but
 // count in the step), film (two stones through a film), particle-wall (the
 // mould and the plate). Host-only.
-#include <vrut/rutting/materials.hpp>
+#include <vrut/protocol/rutting/materials.hpp>
 
 #include <algorithm>
 #include <string>
