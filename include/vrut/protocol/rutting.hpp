@@ -1,7 +1,8 @@
 #pragma once
 // The whole virtual rutting test in one include: its definition
 // (protocol/rutting/test.hpp), material model (protocol/rutting/materials.hpp), measurements
-// (protocol/rutting/result.hpp) and run (protocol/rutting/run.hpp).
+// (protocol/rutting/result.hpp) and run (protocol/rutting/run.hpp, by the one
+// driver of 2D and 3D, protocol/rutting/driver.hpp).
 #include <vrut/protocol/rutting/materials.hpp>
 #include <vrut/protocol/rutting/result.hpp>
 #include <vrut/protocol/rutting/run.hpp>

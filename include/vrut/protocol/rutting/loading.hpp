@@ -1,11 +1,15 @@
 #pragma once
-// The loading that the 2D and 3D rutting runs share (run.hpp, run3.hpp):
+// The loading that the 2D and 3D rutting runs share (driver.hpp): the
+// numerics (RuttingNumerics), the plan of the loading's steps;
 // the plates' load ramped up over the first steps, then the steps, with a
 // sample of the curve at each of `samples` even times, the progress, a stop
 // asked at each sample, and the checkpoints; and the state of all that
 // between two steps, which every checkpoint holds.
+#include <vrut/protocol/rutting/test.hpp>
+
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <stdexcept>
@@ -18,6 +22,35 @@ struct LoadingPlan {
   long steps = 0, ramp_steps = 1;
   int samples = 0;
 };
+
+struct RuttingNumerics {
+  double shift = 1e4;                // alpha_T
+  double timestep_safety = 0.3;
+  // Local damping while loading. 0: the mastic's viscosity is the physical damping, and
+  // local damping would act as an extra dashpot that grows with alpha_T (docs/validation.md).
+  double damping = 0.0;
+  double settle_damping = 0.7;
+  long settle_steps = 4000;          // under gravity, before the plate comes down
+  double ramp_fraction = 0.02;       // of the loading time, for the plate force to rise
+  int samples = 240;                 // points of the deformation curve
+
+  void validate() const {
+    if (!(timestep_safety > 0.0 && timestep_safety <= 1.0)) throw std::invalid_argument("time-step safety must lie in (0, 1]");
+    if (samples < 10) throw std::invalid_argument("at least 10 samples");
+  }
+};
+
+// The loading's time (the test's, reduced by alpha_T), its steps of dt, the
+// plates' load rising over ramp_fraction of them, and the samples.
+inline LoadingPlan loading_plan(const WheelTracking& wt, const RuttingNumerics& num, double dt) {
+  LoadingPlan plan;
+  plan.dt = dt;
+  plan.t_load = wt.loading_time() / num.shift;
+  plan.steps = static_cast<long>(std::ceil(plan.t_load / dt));
+  plan.ramp_steps = std::max(1L, static_cast<long>(num.ramp_fraction * plan.steps));
+  plan.samples = num.samples;
+  return plan;
+}
 
 // Vector: the dimension's (Vec2, Vec3). One entry a specimen in each list.
 template <class Vector>
