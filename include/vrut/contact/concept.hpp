@@ -24,7 +24,9 @@
 // tangent plane (a shear spring's force) provides
 // `template <class Turn> static void turn(state_type&, const Turn& turn)`,
 // which replaces each such vector v by turn(v) as the contact's frame turns
-// (contact/geometry3.hpp, ContactTurn).
+// (contact/geometry3.hpp, ContactTurn). `static void forget(state_type&)`
+// makes a state behave as fresh more cheaply than writing `{}` over it (the
+// engine forgets every pair of its list that is apart, every step).
 #include <vrut/contact/geometry.hpp>
 #include <vrut/data/dimension.hpp>
 
@@ -92,6 +94,9 @@ template <class L>
 struct has_prepare<L, std::void_t<decltype(L::prepare(std::declval<typename L::params_type&>(), 0.0))>>
     : std::true_type {};
 
+template <class, class = void> struct has_forget : std::false_type {};
+template <class L>
+struct has_forget<L, std::void_t<decltype(L::forget(std::declval<typename L::state_type&>()))>> : std::true_type {};
 template <class, class, class = void> struct has_turn : std::false_type {};
 template <class L, class Turn>
 struct has_turn<L, Turn, std::void_t<decltype(L::turn(std::declval<typename L::state_type&>(),
@@ -144,6 +149,12 @@ template <class Law>
 KOKKOS_INLINE_FUNCTION void make_bonded(typename Law::state_type& s) {
   if constexpr (detail::has_bond<Law>::value) Law::bond(s);
   else (void)s;
+}
+// Makes a contact's state fresh: the law's own `forget`, else `{}`.
+template <class Law>
+KOKKOS_INLINE_FUNCTION void forget_contact(typename Law::state_type& s) {
+  if constexpr (detail::has_forget<Law>::value) Law::forget(s);
+  else s = typename Law::state_type{};
 }
 // Whether a law reads the masses of ContactGeometry (a law or slot says so
 // with `static constexpr bool uses_mass = true`); the engine fills them only

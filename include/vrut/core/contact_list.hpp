@@ -79,7 +79,8 @@ class ContactList {
       if (most_reverse <= reverse_capacity && reverse_capacity <= most_reverse + 1) break;
       reverse_capacity = most_reverse + 1;
     }
-    position_at_build = Kokkos::View<vector*, memory_space>("position_at_build", n);
+    if (position_at_build.extent(0) != static_cast<std::size_t>(n))
+      position_at_build = Kokkos::View<vector*, memory_space>("position_at_build", n);
     Kokkos::deep_copy(space, position_at_build, ps.position);
     ++builds;
   }
@@ -124,9 +125,11 @@ class ContactList {
   int fill(const execution_space& space, const particles_type& ps, double skin) {
     const int n = static_cast<int>(ps.size());
     const int cap = capacity;
-    Kokkos::View<int**, memory_space> new_partner("partner", n, cap);
-    Kokkos::View<int*, memory_space> new_count("count", n);
-    Kokkos::View<state_type**, memory_space> new_state("contact_state", n, cap);
+    // The rows are written into the last build's Views where they have this
+    // shape (a slot past a row's count is never read), else into new ones.
+    auto new_partner = reuse_or_new(spare_partner_, "partner", n, cap);
+    auto new_count = reuse_or_new(spare_count_, "count", n);
+    auto new_state = reuse_or_new(spare_state_, "contact_state", n, cap);
     auto old_partner = partner;
     auto old_count = count;
     auto old_state = state;
@@ -204,17 +207,29 @@ class ContactList {
         },
         Kokkos::Max<int>(needed));
     if (needed > cap) return needed;
+    spare_partner_ = partner;
+    spare_count_ = count;
+    spare_state_ = state;
     partner = new_partner;
     count = new_count;
     state = new_state;
-    load = Kokkos::View<ContactLoadIn<D>**, memory_space>("contact_load", n, cap);
+    // The loads start at zero after every build, as the force pass has not
+    // yet been over the new rows.
+    if (load.extent(0) == static_cast<std::size_t>(n) && load.extent(1) == static_cast<std::size_t>(cap))
+      Kokkos::deep_copy(space, load, ContactLoadIn<D>{});
+    else
+      load = Kokkos::View<ContactLoadIn<D>**, memory_space>("contact_load", n, cap);
     return needed;
   }
 
   int fill_reverse(const execution_space& space, int n) {
     const int cap = capacity, rcap = reverse_capacity;
-    reverse = Kokkos::View<int**, memory_space>("reverse", n, rcap);
-    reverse_count = Kokkos::View<int*, memory_space>("reverse_count", n);
+    if (reverse.extent(0) != static_cast<std::size_t>(n) || reverse.extent(1) != static_cast<std::size_t>(rcap))
+      reverse = Kokkos::View<int**, memory_space>("reverse", n, rcap);
+    if (reverse_count.extent(0) != static_cast<std::size_t>(n))
+      reverse_count = Kokkos::View<int*, memory_space>("reverse_count", n);
+    else
+      Kokkos::deep_copy(space, reverse_count, 0);
     auto rev = reverse;
     auto rcount = reverse_count;
     auto p = partner;
@@ -245,6 +260,21 @@ class ContactList {
         },
         Kokkos::Max<int>(needed));
     return needed;
+  }
+
+ private:
+  // The Views of the build before last, which a build writes its rows into
+  // when their shape fits (a new View costs its allocation and first touch).
+  Kokkos::View<int**, memory_space> spare_partner_;
+  Kokkos::View<int*, memory_space> spare_count_;
+  Kokkos::View<state_type**, memory_space> spare_state_;
+
+  template <class View, class... Extents>
+  static View reuse_or_new(const View& spare, const char* label, Extents... extents) {
+    const std::size_t want[] = {static_cast<std::size_t>(extents)...};
+    bool fits = spare.data() != nullptr;
+    for (std::size_t a = 0; a < sizeof...(Extents); ++a) fits = fits && spare.extent(a) == want[a];
+    return fits ? spare : View(std::string(label), static_cast<std::size_t>(extents)...);
   }
 };
 

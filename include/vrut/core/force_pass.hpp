@@ -28,7 +28,7 @@ void contact_forces(const Space& space, const Particles& ps, const Contacts& con
           const int j = partner(i, k);
           const vector d = box.separation(ps.position(i), ps.position(j));
           if (Geometry<Dim>::apart_at_a_glance(d, ps.radius(i) + ps.radius(j)) && !is_bonded<Law>(state(i, k))) {
-            state(i, k) = typename Law::state_type{};
+            forget_contact<Law>(state(i, k));
             load(i, k) = ContactLoadIn<Dim>{};
             continue;
           }
@@ -37,7 +37,7 @@ void contact_forces(const Space& space, const Particles& ps, const Contacts& con
           g.normal = (1.0 / dist) * d;
           g.overlap = ps.radius(i) + ps.radius(j) - dist;
           if (g.overlap <= 0.0 && !is_bonded<Law>(state(i, k))) {
-            state(i, k) = typename Law::state_type{};
+            forget_contact<Law>(state(i, k));
             load(i, k) = ContactLoadIn<Dim>{};
             continue;
           }
