@@ -117,7 +117,7 @@ py::dict rutting(const std::vector<std::string>& args, const std::string& out, c
   const app::ranks::Session one_rank(argc, argv);
   vrut::CheckpointFile* file = checkpoint ? &*checkpoint : nullptr;
   const app::RuttingOutcome outcome = run_outside_python([&] {
-    return given.dim == 3 ? app::run_rutting_3d(given, file, config_text, hooks)
+    return given.dim == 3 ? app::run_rutting_3d(given, file, config_text, one_rank, hooks)
                           : app::run_rutting_2d(given, file, config_text, one_rank, hooks);
   });
   py::dict d;

@@ -36,7 +36,6 @@ int main(int argc, char** argv) {
   given.seed_given = app.count("--seed") > 0;
 
   const int code = cli::guarded([&] {
-    if (given.dim == 3 && session.size() > 1) throw std::invalid_argument("the 3D test runs on one MPI rank yet");
     namespace fs = std::filesystem;
     std::optional<vrut::CheckpointFile> checkpoint;
     RunOptions o = given;
@@ -64,9 +63,8 @@ int main(int argc, char** argv) {
       header["config_with_help"] = config_text;
       checkpoint.emplace(fs::path(given.out) / checkpoint_name, given.checkpoint_every, header);
     }
-    if (o.dim == 3 && session.size() > 1) throw std::invalid_argument("the 3D test runs on one MPI rank yet");
     if (o.out.empty()) throw std::invalid_argument("--out: the output folder, not empty");
-    const vrut::app::RuttingOutcome outcome = o.dim == 3 ? vrut::app::run_rutting_3d(o, &*checkpoint, config_text)
+    const vrut::app::RuttingOutcome outcome = o.dim == 3 ? vrut::app::run_rutting_3d(o, &*checkpoint, config_text, session)
                                                          : vrut::app::run_rutting_2d(o, &*checkpoint, config_text, session);
     return outcome.exit_code;
   });

@@ -4,6 +4,7 @@
 // 3D does not have (images, the method's bonded stones, the mean film, the
 // 2D conversions, MPI) is refused by name.
 #include "cli.hpp"
+#include "ranks.hpp"
 #include "draw3.hpp"
 #include "seeds.hpp"
 #include "specimen3_cli.hpp"
@@ -64,8 +65,11 @@ inline void final_vtk3(const vrut::Specimen3& sp, const vrut::RuttingResult3& ru
 // nullptr for none; config_text: config.ini. With o.out empty nothing is
 // written (the Python module's default). Errors throw: std::invalid_argument
 // for bad input, std::runtime_error where a specimen cannot be made.
+// Under mpirun -np K the seeds are shared out in blocks as in 2D
+// (rutting_2d.hpp); each rank places and runs its own, rank 0 gathers the
+// results and writes them.
 inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpoint, const std::string& config_text,
-                                     const RuttingHooks& hooks = {}) {
+                                     const ranks::Session& session, const RuttingHooks& hooks = {}) {
   namespace fs = std::filesystem;
   // By value, not by what was typed: a config file (config.ini) holds every option.
   const RunOptions defaults;
@@ -104,17 +108,22 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   const std::vector<std::uint64_t> seeds =
       o.seeds_text.empty() ? std::vector<std::uint64_t>{ss.seed} : cli::parse_seed_list(o.seeds_text);
   const bool ensemble = !o.seeds_text.empty();
+  if (seeds.size() < static_cast<std::size_t>(session.size()))
+    throw std::invalid_argument(std::to_string(session.size()) + " MPI ranks for " + std::to_string(seeds.size()) +
+                                " seed(s): give at least one seed per rank (--seeds)");
+  const auto [first_seed, last_seed] = ranks::block(seeds.size(), session.rank(), session.size());
+  const std::vector<std::uint64_t> my_seeds(seeds.begin() + first_seed, seeds.begin() + last_seed);
   const double spheres = 4.0 / std::pow(vrut::fcc_cell(ss.sphere_radius), 3) * ss.placement.width *
                          ss.placement.height * ss.placement.depth;
   // Measured: about 2 kB a sphere in the run (95k spheres).
-  vrut::require_memory(spheres * seeds.size(), 3072.0, 64e6, ensemble ? "this 3D ensemble" : "this 3D run");
-  std::optional<vrut::OutputDir> output;
-  if (!o.out.empty()) output.emplace(o.out, o.force);
+  vrut::require_memory(spheres * my_seeds.size(), 3072.0, 64e6, ensemble ? "this 3D ensemble" : "this 3D run");
+  std::optional<vrut::OutputDir> output;  // rank 0 writes the results
+  if (session.root() && !o.out.empty()) output.emplace(o.out, o.force);
   if (output) output->write_text("config.ini", config_text);
   // The results, and two checkpoints (the old one stays until the new one
   // is whole) of about 2.5 kB a sphere.
   if (output) output->require_space(4'000'000 + 400 * static_cast<std::size_t>(spheres) +
-                       2 * 2'500 * static_cast<std::size_t>(spheres * seeds.size()));
+                       2 * 2'500 * static_cast<std::size_t>(spheres * my_seeds.size()) * session.size());
 
   // The stones go into the checkpoint's header: a resumed run takes them
   // from there rather than placing them again (a compacted 3# specimen
@@ -132,7 +141,7 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   else kokkos.emplace(o.threads);
   std::vector<vrut::Specimen3> specimens;
   if (stones_kept != nullptr) {
-    for (std::uint64_t seed : seeds) {
+    for (std::uint64_t seed : my_seeds) {
       ss.seed = seed;
       const std::string key = std::to_string(seed);
       if (!stones_kept->contains(key))
@@ -144,39 +153,44 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
     }
   } else {
     try {
-      if (ensemble) {
+      if (my_seeds.size() > 1) {
         specimens = specimen_cli::generate_specimens3_showing_progress(
-            ss, seeds, vrut::concurrency(Kokkos::DefaultHostExecutionSpace()));
+            ss, my_seeds, vrut::concurrency(Kokkos::DefaultHostExecutionSpace()));
       } else {
         vrut::SpecimenSettings3 alone = ss;  // one specimen: its compaction (3#) on all the run's threads
+        alone.seed = my_seeds.front();
         alone.compaction.threads = vrut::concurrency(Kokkos::DefaultHostExecutionSpace());
         specimens.push_back(specimen_cli::generate_specimen3_showing_progress(alone, "placing stones"));
       }
     } catch (const std::runtime_error& e) {  // the stones' fraction could not be reached
-      throw std::runtime_error((ensemble ? "" : "seed " + std::to_string(ss.seed) + ": ") + e.what());
+      throw std::runtime_error((my_seeds.size() > 1 ? "" : "seed " + std::to_string(my_seeds.front()) + ": ") + e.what());
     }
-    for (std::size_t e = 0; e < seeds.size(); ++e)
-      stones_to_keep[std::to_string(seeds[e])] = vrut::stones3_state(specimens[e].placement);
+    for (std::size_t e = 0; e < my_seeds.size(); ++e)
+      stones_to_keep[std::to_string(my_seeds[e])] = vrut::stones3_state(specimens[e].placement);
   }
   if (stones_kept == nullptr && checkpoint != nullptr) checkpoint->add_to_header("stones3", std::move(stones_to_keep));
   const vrut::Specimen3& sp = specimens.front();
   std::size_t all_spheres = 0;
   for (const auto& one : specimens) all_spheres += one.spheres.centers.size();
-  std::fprintf(stderr, "specimen%s: gradation %s, 3D, %.0f x %.0f x %.2f mm, %zu spheres%s, %zu stones%s; plate "
-               "%.2f x %.2f mm, loading %.1f s (%.4g s reduced)\n",
-               ensemble ? "s" : "", ss.gradation.name.c_str(), sp.width, sp.height, sp.depth, all_spheres,
-               ensemble ? " in all" : "", sp.placement.stones.size(), ensemble ? " in the first" : "",
-               wt.contact_length() * 1e3, sp.depth, wt.loading_time(), wt.loading_time() / num.shift);
+  std::FILE* const screen = session.root() ? stderr : nullptr;  // rank 0 speaks for all
+  if (screen != nullptr)
+    std::fprintf(screen, "specimen%s: gradation %s, 3D, %.0f x %.0f x %.2f mm, %zu spheres%s, %zu stones%s; plate "
+                 "%.2f x %.2f mm, loading %.1f s (%.4g s reduced)\n",
+                 ensemble ? "s" : "", ss.gradation.name.c_str(), sp.width, sp.height, sp.depth, all_spheres,
+                 session.size() > 1 ? (" on rank 0 of " + std::to_string(session.size())).c_str()
+                                    : (ensemble ? " in all" : ""),
+                 sp.placement.stones.size(), ensemble ? " in the first" : "", wt.contact_length() * 1e3, sp.depth,
+                 wt.loading_time(), wt.loading_time() / num.shift);
   int used_threads = 1;
   // Reported in permille of the test; read as minutes of the test a second.
   vrut::ProgressBar bar(ensemble ? "loading " + cli::specimens_text(seeds.size()) : "loading", 1000,
-                        {"test min", wt.minutes / 1000.0});
+                        {"test min", wt.minutes / 1000.0}, screen);
   if (checkpoint != nullptr && checkpoint->resuming())
     std::fprintf(stderr, "resuming from %s\n", checkpoint->path().c_str());
   std::vector<vrut::RuttingResult3> runs3;
   {
     CatchStopSignals catching;
-    SettlingBar settling(ensemble ? seeds.size() : 1);
+    SettlingBar settling(ensemble ? seeds.size() : 1, screen);
     try {
       runs3 = vrut::dispatch_backend(o.backend, [&](auto space) {
         used_threads = vrut::concurrency(space);
@@ -186,7 +200,8 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
               bar.update(static_cast<long>(1000 * fraction));
               if (hooks.progress) hooks.progress(fraction);
             },
-            [&] { return stop_signal != 0; }, checkpoint, [&](long done, long steps) { settling(done, steps); });
+            // Every rank stops at the same sample, so the curves stay the same length.
+            [&] { return session.any(stop_signal != 0); }, checkpoint, [&](long done, long steps) { settling(done, steps); });
       });
     } catch (const vrut::SimulationUnstable&) {
       std::fprintf(stderr, "\n--timestep-safety sets the time-step safety (%g here)\n", num.timestep_safety);
@@ -199,8 +214,34 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   std::vector<ranks::SpecimenFacts> facts;
   for (std::size_t e = 0; e < runs3.size(); ++e) {
     runs.push_back(runs3[e].result);
-    facts.push_back({specimens[e].placement.stones.size(), specimens[e].placement.achieved_fraction, 0});
+    facts.push_back({specimens[e].placement.stones.size(), specimens[e].placement.achieved_fraction, session.rank()});
   }
+  // Rank 0 gathers every specimen's result, in the seeds' order.
+  if (session.size() > 1) {
+    nlohmann::json mine = nlohmann::json::array();
+    for (std::size_t e = 0; e < runs.size(); ++e) mine.push_back(ranks::to_json(runs[e], facts[e]));
+    const auto parts = session.gather(nlohmann::json::to_cbor(mine));
+    if (!session.root()) {
+      RuttingOutcome outcome;
+      outcome.seeds = seeds;
+      outcome.ensemble = ensemble;
+      outcome.interrupted = runs.front().interrupted;
+      if (outcome.interrupted) outcome.exit_code = 128 + static_cast<int>(stop_signal);
+      return outcome;
+    }
+    std::vector<vrut::RuttingResult> all;
+    facts.clear();
+    for (const auto& part : parts)
+      for (const auto& j : nlohmann::json::from_cbor(part)) {
+        auto [r, f] = ranks::from_json(j);
+        all.push_back(std::move(r));
+        facts.push_back(f);
+      }
+    all.front() = std::move(runs.front());  // with what only rank 0 has
+    runs = std::move(all);
+  }
+  all_spheres = 0;
+  for (const auto& r : runs) all_spheres += r.particles;
   const vrut::RuttingResult& res = runs.front();
   const bool interrupted = res.interrupted;
   const double minutes_done = res.samples.empty() ? 0.0 : res.samples.back().minutes;
@@ -237,6 +278,7 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   j["shift_factor"] = num.shift;
   j["conversion"] = "fcc_lattice";
   j["particles"] = all_spheres;
+  j["mpi_ranks"] = session.size();
   j["rigid_stones"] = true;
   j["stone_film"] = o.stone_film;
   j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
