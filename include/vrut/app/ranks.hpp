@@ -153,4 +153,27 @@ inline std::pair<vrut::RuttingResult, SpecimenFacts> from_json(const nlohmann::j
   return {r, {j.at("aggregates"), j.at("aggregate_area_fraction"), j.at("rank")}};
 }
 
+// Rank 0 gathers every rank's results and facts into runs and facts, in the
+// seeds' order (each rank holds a block of them); every rank must call it.
+// Returns false on the other ranks, which have nothing more to write.
+inline bool gather_on_root(const Session& session, std::vector<vrut::RuttingResult>& runs,
+                           std::vector<SpecimenFacts>& facts) {
+  if (session.size() == 1) return true;
+  nlohmann::json mine = nlohmann::json::array();
+  for (std::size_t e = 0; e < runs.size(); ++e) mine.push_back(to_json(runs[e], facts[e]));
+  const auto parts = session.gather(nlohmann::json::to_cbor(mine));
+  if (!session.root()) return false;
+  std::vector<vrut::RuttingResult> all;
+  facts.clear();
+  for (const auto& part : parts)
+    for (const auto& j : nlohmann::json::from_cbor(part)) {
+      auto [r, f] = from_json(j);
+      all.push_back(std::move(r));
+      facts.push_back(f);
+    }
+  all.front() = std::move(runs.front());  // with what only rank 0 has: the snapshots and velocities, for the pictures
+  runs = std::move(all);
+  return true;
+}
+
 }  // namespace vrut::app::ranks

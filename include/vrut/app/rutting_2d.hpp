@@ -181,22 +181,7 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   std::vector<ranks::SpecimenFacts> facts;
   for (const auto& one : specimens)
     facts.push_back({one.placement.aggregates.size(), one.placement.achieved_fraction, session.rank()});
-  if (session.size() > 1) {
-    nlohmann::json mine = nlohmann::json::array();
-    for (std::size_t e = 0; e < runs.size(); ++e) mine.push_back(ranks::to_json(runs[e], facts[e]));
-    const auto parts = session.gather(nlohmann::json::to_cbor(mine));
-    if (!session.root()) return outcome;
-    std::vector<vrut::RuttingResult> all;
-    facts.clear();
-    for (const auto& part : parts)
-      for (const auto& j : nlohmann::json::from_cbor(part)) {
-        auto [r, f] = ranks::from_json(j);
-        all.push_back(std::move(r));
-        facts.push_back(f);
-      }
-    all.front() = std::move(runs.front());  // with what only rank 0 has: the snapshots and velocities, for the pictures
-    runs = std::move(all);
-  }
+  if (!ranks::gather_on_root(session, runs, facts)) return outcome;
   std::size_t disks = 0;
   double wall_seconds = 0.0;
   for (const auto& r : runs) disks += r.particles, wall_seconds = std::max(wall_seconds, r.wall_seconds);

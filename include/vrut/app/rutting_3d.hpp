@@ -217,28 +217,13 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
     facts.push_back({specimens[e].placement.stones.size(), specimens[e].placement.achieved_fraction, session.rank()});
   }
   // Rank 0 gathers every specimen's result, in the seeds' order.
-  if (session.size() > 1) {
-    nlohmann::json mine = nlohmann::json::array();
-    for (std::size_t e = 0; e < runs.size(); ++e) mine.push_back(ranks::to_json(runs[e], facts[e]));
-    const auto parts = session.gather(nlohmann::json::to_cbor(mine));
-    if (!session.root()) {
-      RuttingOutcome outcome;
-      outcome.seeds = seeds;
-      outcome.ensemble = ensemble;
-      outcome.interrupted = runs.front().interrupted;
-      if (outcome.interrupted) outcome.exit_code = 128 + static_cast<int>(stop_signal);
-      return outcome;
-    }
-    std::vector<vrut::RuttingResult> all;
-    facts.clear();
-    for (const auto& part : parts)
-      for (const auto& j : nlohmann::json::from_cbor(part)) {
-        auto [r, f] = ranks::from_json(j);
-        all.push_back(std::move(r));
-        facts.push_back(f);
-      }
-    all.front() = std::move(runs.front());  // with what only rank 0 has
-    runs = std::move(all);
+  if (!ranks::gather_on_root(session, runs, facts)) {
+    RuttingOutcome outcome;
+    outcome.seeds = seeds;
+    outcome.ensemble = ensemble;
+    outcome.interrupted = runs.front().interrupted;
+    if (outcome.interrupted) outcome.exit_code = 128 + static_cast<int>(stop_signal);
+    return outcome;
   }
   all_spheres = 0;
   for (const auto& r : runs) all_spheres += r.particles;
