@@ -68,7 +68,7 @@ TEST_CASE("a choice of two laws without bonds is never bonded", "[laws][unit]") 
   CHECK_FALSE(Law::bonded(s));
 }
 
-TEST_CASE("a broken bond of a choice stays broken; its law keeps its shear history until forgotten", "[laws][unit]") {
+TEST_CASE("a broken bond of a choice stays broken, and its law keeps its shear history until forgotten", "[laws][unit]") {
   using Law = Choice<vrut::Linear, vrut::LinearBonded>;
   const auto p = Law::make_second(vrut::linear_bonded_params(kn, ks, 0.5, strength, strength));
   Law::state_type s{};
