@@ -1,8 +1,8 @@
 #pragma once
 // vrut-rutting --dim 3: the 3D test (protocol/rutting/run3.hpp) of one specimen or an
-// ensemble (--seeds), with checkpoints and --resume, and its outputs. What
+// ensemble (--seeds, shared among MPI ranks), with checkpoints and --resume, and its outputs. What
 // 3D does not have (images, the method's bonded stones, the mean film, the
-// 2D conversions, MPI) is refused by name.
+// 2D conversions) is refused by name.
 #include "cli.hpp"
 #include "ranks.hpp"
 #include "draw3.hpp"
