@@ -384,6 +384,46 @@ TEST_CASE("3D placement: the compacted stones fill the box evenly (3#)", "[.][sp
   check_even_fill(3, 100.0, vrut::StonePacking3::compaction);
 }
 
+// The compaction's cheap test before MPR (compaction3.hpp, gap_along): the
+// gap along a direction between two cubes worked by hand, across the
+// periodic depth too; and on random stones, a positive gap along any
+// direction is a true separation by the exact test (separating_axes.hpp),
+// so the compaction never passes by a pair that touches.
+TEST_CASE("3D compaction: the gap along a direction, by hand and against separating axes", "[specimen3][unit]") {
+  vrut::detail::CompactedStone a, b;
+  for (double x : {-1.0, 1.0})
+    for (double y : {-1.0, 1.0})
+      for (double z : {-1.0, 1.0}) a.vertices.emplace_back(x, y, z);  // a cube of side 2 about its centre
+  b.vertices = a.vertices;
+  b.centre = Point3(3.0, 0.0, 0.0);
+  CHECK(vrut::detail::gap_along(a, b, Point3::Zero(), Point3::UnitX()) == Approx(1.0));
+  CHECK(vrut::detail::gap_along(a, b, Point3::Zero(), -Point3::UnitX()) == Approx(-5.0));  // b is not beyond a that way
+  // Along the diagonal (1, 1, 0)/sqrt 2: a reaches sqrt 2, b begins at 3/sqrt 2 - sqrt 2.
+  CHECK(vrut::detail::gap_along(a, b, Point3::Zero(), Point3(1.0, 1.0, 0.0).normalized()) ==
+        Approx(3.0 / std::sqrt(2.0) - 2.0 * std::sqrt(2.0)));
+  // b 37 mm along the depth, its image one depth of 40 mm back: 3 mm apart, a gap of 1.
+  b.centre = Point3(0.0, 0.0, 37.0);
+  CHECK(vrut::detail::gap_along(a, b, Point3(0.0, 0.0, -40.0), -Point3::UnitZ()) == Approx(1.0));
+
+  std::mt19937_64 rng(11);
+  vrut::StoneShape3 shape;
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int apart = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const vrut::Stone3 sa = vrut::random_stone3(2.0, shape, rng), sb = vrut::random_stone3(1.5, shape, rng);
+    vrut::detail::CompactedStone ca, cb;
+    ca.vertices = sa.vertices, cb.vertices = sb.vertices;  // centroids at the origin
+    cb.centre = 3.5 * Point3(u(rng), u(rng), u(rng));
+    const Point3 along = Point3(u(rng), u(rng), u(rng)).normalized();
+    if (vrut::detail::gap_along(ca, cb, Point3::Zero(), along) <= 1e-9) continue;
+    ++apart;
+    vrut::Stone3 moved = sb;
+    moved.translate(cb.centre);
+    CHECK(vrut_test::separation(sa, moved) > 0.0);
+  }
+  CHECK(apart > 100);
+}
+
 // Compaction (compaction3.hpp) of stones of two classes, 2.36-4.75 and
 // 4.75-9.5 mm, to 0.60 of a 30 x 25 x 20 mm box. What it must give, checked
 // by means it does not use: no point in two stones (its own check is
