@@ -32,7 +32,10 @@ namespace vrut {
 // 2 (2026-12-03): the loading's time step kept, and checked on resume.
 // 3 (2026-12-04): each specimen's skeleton record (the films at the start,
 // the early load path: protocol/rutting/skeleton_record.hpp).
-inline constexpr int checkpoint_format = 3;
+// 4 (2026-12-05): a Choice's contact slot holds the state of the law that
+// acts there only (contact/choice.hpp), so the contact state's bytes changed;
+// a checkpoint of format 3 is refused by its format, not by its item sizes.
+inline constexpr int checkpoint_format = 4;
 inline constexpr const char* checkpoint_magic = "vrut checkpoint\n";
 
 // A checkpoint that cannot be used: not one, damaged, from another version,
