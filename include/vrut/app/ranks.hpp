@@ -12,6 +12,7 @@
 #include <mpi.h>
 #endif
 
+#include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -95,6 +96,16 @@ inline std::pair<std::size_t, std::size_t> block(std::size_t n, int rank, int si
   const std::size_t base = n / size, extra = n % size, r = static_cast<std::size_t>(rank);
   const std::size_t first = r * base + (r < extra ? r : extra);
   return {first, first + base + (r < extra ? 1 : 0)};
+}
+
+// This rank's seeds, its block of the ensemble's; refused where there are
+// fewer seeds than ranks (a rank would have nothing to run).
+inline std::vector<std::uint64_t> seeds_of_rank(const std::vector<std::uint64_t>& seeds, const Session& session) {
+  if (seeds.size() < static_cast<std::size_t>(session.size()))
+    throw std::invalid_argument(std::to_string(session.size()) + " MPI ranks for " + std::to_string(seeds.size()) +
+                                " seed(s): give at least one seed per rank (--seeds)");
+  const auto [first, last] = block(seeds.size(), session.rank(), session.size());
+  return {seeds.begin() + static_cast<std::ptrdiff_t>(first), seeds.begin() + static_cast<std::ptrdiff_t>(last)};
 }
 
 // Each rank checkpoints its own specimens, and resumes them with as many ranks.

@@ -108,11 +108,7 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   const std::vector<std::uint64_t> seeds =
       o.seeds_text.empty() ? std::vector<std::uint64_t>{ss.seed} : cli::parse_seed_list(o.seeds_text);
   const bool ensemble = !o.seeds_text.empty();
-  if (seeds.size() < static_cast<std::size_t>(session.size()))
-    throw std::invalid_argument(std::to_string(session.size()) + " MPI ranks for " + std::to_string(seeds.size()) +
-                                " seed(s): give at least one seed per rank (--seeds)");
-  const auto [first_seed, last_seed] = ranks::block(seeds.size(), session.rank(), session.size());
-  const std::vector<std::uint64_t> my_seeds(seeds.begin() + first_seed, seeds.begin() + last_seed);
+  const std::vector<std::uint64_t> my_seeds = ranks::seeds_of_rank(seeds, session);
   const double spheres = 4.0 / std::pow(vrut::fcc_cell(ss.sphere_radius), 3) * ss.placement.width *
                          ss.placement.height * ss.placement.depth;
   // Measured: about 2 kB a sphere in the run (95k spheres).
