@@ -86,7 +86,7 @@ inline double pair_image(double image_at_search, long a_wraps_since, long b_wrap
 // `margin` all round (the Minkowski sum with a ball). It keeps the last
 // direction libccd asked it for: when MPR finds two stones apart, the last
 // direction it asked the first stone for is one along which they lie apart
-// (or nearly: it is only a hint for apart_along, which checks it).
+// (or nearly: it is only a hint, which gap_along checks).
 struct ShiftedCompactedStone {
   const CompactedStone* stone;
   Point3 shift;
@@ -305,13 +305,12 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
           return;
         }
       }
-      Point3& apart = p.apart;
       detail::ShiftedCompactedStone sa{&a, Point3::Zero(), margin}, sb{&b, shift, margin};
       ccd_real_t overlap_depth;
       ccd_vec3_t direction, point;
       if (ccdMPRPenetration(&sa, &sb, &ccd, &overlap_depth, &direction, &point) != 0) {
         const double length = sa.last_asked.norm();
-        apart = length > 0.0 ? Point3(sa.last_asked / length) : Point3::Zero();
+        p.apart = length > 0.0 ? Point3(sa.last_asked / length) : Point3::Zero();
         return;
       }
       detail::PairContact& c = contacts[q];
@@ -319,7 +318,7 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
       c.depth = overlap_depth - clearance;
       // The direction moves b out of a.
       const Point3 n(ccdVec3X(&direction), ccdVec3Y(&direction), ccdVec3Z(&direction));
-      apart = n.normalized();
+      p.apart = n.normalized();
       const Point3 at(ccdVec3X(&point), ccdVec3Y(&point), ccdVec3Z(&point));
       c.arm_a = at - a.centre, c.arm_b = at - (b.centre + shift);
       const Point3 relative = (b.velocity + b.spin.cross(c.arm_b)) - (a.velocity + a.spin.cross(c.arm_a));
