@@ -387,20 +387,24 @@ TEST_CASE("3D placement: the compacted stones fill the box evenly (3#)", "[.][sp
 // The compaction's cheap test before MPR (compaction3.hpp, gap_along): the
 // gap along a direction between two cubes worked by hand, across the
 // periodic depth too; and on random stones, a positive gap along any
-// direction is a true separation by the exact test (separating_axes.hpp),
-// so the compaction never passes by a pair that touches.
+// direction is a true separation by the exact test (separating_axes.hpp).
+// That the slack and the directions kept pass by no pair that MPR would
+// find touching rests on the compaction pin and the threads test below.
 TEST_CASE("3D compaction: the gap along a direction, by hand and against separating axes", "[specimen3][unit]") {
   vrut::detail::CompactedStone a, b;
   for (double x : {-1.0, 1.0})
     for (double y : {-1.0, 1.0})
       for (double z : {-1.0, 1.0}) a.vertices.emplace_back(x, y, z);  // a cube of side 2 about its centre
-  b.vertices = a.vertices;
+  // b the same cube with its vertices 0.5 mm off its centre along x (so a
+  // gap that took a's nearest and b's farthest would differ), centred at x 3:
+  // it spans x 2.5 to 4.5, a -1 to 1.
+  for (const Point3& v : a.vertices) b.vertices.push_back(v + Point3(0.5, 0.0, 0.0));
   b.centre = Point3(3.0, 0.0, 0.0);
-  CHECK(vrut::detail::gap_along(a, b, Point3::Zero(), Point3::UnitX()) == Approx(1.0));
-  CHECK(vrut::detail::gap_along(a, b, Point3::Zero(), -Point3::UnitX()) == Approx(-5.0));  // b is not beyond a that way
-  // Along the diagonal (1, 1, 0)/sqrt 2: a reaches sqrt 2, b begins at 3/sqrt 2 - sqrt 2.
+  CHECK(vrut::detail::gap_along(a, b, Point3::Zero(), Point3::UnitX()) == Approx(1.5));
+  CHECK(vrut::detail::gap_along(a, b, Point3::Zero(), -Point3::UnitX()) == Approx(-5.5));  // b is not beyond a that way
+  // Along the diagonal (1, 1, 0)/sqrt 2: a reaches 2/sqrt 2, b begins at (3 - 1.5)/sqrt 2.
   CHECK(vrut::detail::gap_along(a, b, Point3::Zero(), Point3(1.0, 1.0, 0.0).normalized()) ==
-        Approx(3.0 / std::sqrt(2.0) - 2.0 * std::sqrt(2.0)));
+        Approx(-0.5 / std::sqrt(2.0)));
   // b 37 mm along the depth, its image one depth of 40 mm back: 3 mm apart, a gap of 1.
   b.centre = Point3(0.0, 0.0, 37.0);
   CHECK(vrut::detail::gap_along(a, b, Point3(0.0, 0.0, -40.0), -Point3::UnitZ()) == Approx(1.0));

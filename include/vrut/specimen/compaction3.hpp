@@ -109,8 +109,8 @@ inline void compacted_centre(const void* object, ccd_vec3_t* out) {
 }
 
 // How far b (shifted) lies beyond a along the unit direction `along`: the
-// gap between the planes through their farthest vertices along it (a
-// separating axis where positive).
+// gap between the plane through a's farthest vertex along it and the plane
+// through b's nearest (a separating axis where positive).
 inline double gap_along(const CompactedStone& a, const CompactedStone& b, const Point3& shift, const Point3& along) {
   double top_a = -std::numeric_limits<double>::infinity(), bottom_b = std::numeric_limits<double>::infinity();
   for (const auto& v : a.vertices) top_a = std::max(top_a, v.dot(along));
@@ -207,13 +207,14 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
     int a, b;
     double image;          // as found
     long a_wraps, b_wraps;  // the stones' wraps when found
-    // A unit direction along which b lay beyond a when last seen (their
-    // contact's normal, or MPR's last direction when it found them apart);
-    // zero until the first test.
+    // A unit direction to test the pair along first: the last direction
+    // MPR asked for when it found them apart, or their contact's normal
+    // (along which b leaves a); zero until MPR first ran on the pair.
     Point3 apart = Point3::Zero();
-    // How much nearer the two may come and still be found apart: their gap
-    // when last measured, less the least one (below), less what they have
-    // moved since (negative: test again).
+    // How much nearer the two may come and still be apart: their gap when
+    // last measured by the reach or along `apart`, less the least one
+    // (below), less what they have moved since; not positive: test again
+    // (MPR leaves it so).
     double slack = -1.0;
   };
   std::vector<Pair> pairs;
