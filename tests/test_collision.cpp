@@ -15,21 +15,37 @@ struct CollisionResult {
   double duration, energy_before, energy_after, m_eff, kn;
 };
 
+constexpr double r = 0.5, rho = 1000.0, kn = 1.0e5, v0 = 0.1;
+
+// Two disks 0.01 apart on a linear spring k_n, coming together head-on at v0 each.
+template <class Space>
+struct HeadOn {
+  vrut::Simulation<vrut::Linear, Space> sim{disks(), springs()};
+  HeadOn() {
+    auto hv = vrut_test::to_host(sim.particles().velocity);
+    hv(0) = {v0, 0.0};
+    hv(1) = {-v0, 0.0};
+    Kokkos::deep_copy(sim.particles().velocity, hv);
+  }
+  static vrut::ParticleSet disks() {
+    vrut::ParticleSet set;
+    set.add(0.0, 0.0, r, rho);
+    set.add(2.0 * r + 0.01, 0.0, r, rho);
+    return set;
+  }
+  static vrut::AssignmentTable<vrut::Linear> springs() {
+    vrut::AssignmentTable<vrut::Linear> table;
+    table.set_all(vrut::linear_params(kn, 0.0, 0.0));
+    return table;
+  }
+};
+
 template <class Space>
 CollisionResult collide() {
   using namespace vrut;
-  const double r = 0.5, rho = 1000.0, kn = 1.0e5, v0 = 0.1;
-  ParticleSet set;
-  set.add(0.0, 0.0, r, rho);
-  set.add(2.0 * r + 0.01, 0.0, r, rho);
-  AssignmentTable<Linear> table;
-  table.set_all(linear_params(kn, 0.0, 0.0));
-  Simulation<Linear, Space> sim(set, table);
+  HeadOn<Space> head_on;
+  auto& sim = head_on.sim;
   auto ps = sim.particles();
-  auto hv = vrut_test::to_host(ps.velocity);
-  hv(0) = {v0, 0.0};
-  hv(1) = {-v0, 0.0};
-  Kokkos::deep_copy(ps.velocity, hv);
   const double m = vrut_test::to_host(ps.mass)(0);
   const double m_eff = 0.5 * m;
   const double expected = M_PI * std::sqrt(m_eff / kn);
@@ -68,18 +84,9 @@ TEMPLATE_LIST_TEST_CASE("linear collision lasts pi sqrt(m/k) and keeps energy", 
 TEMPLATE_LIST_TEST_CASE("a pair that comes apart leaves no load behind, before any rebuild", "[core][physics]",
                         vrut_test::ExecutionSpaces) {
   using namespace vrut;
-  const double r = 0.5, rho = 1000.0, kn = 1.0e5, v0 = 0.1;
-  ParticleSet set;
-  set.add(0.0, 0.0, r, rho);
-  set.add(2.0 * r + 0.01, 0.0, r, rho);
-  AssignmentTable<Linear> table;
-  table.set_all(linear_params(kn, 0.0, 0.0));
-  Simulation<Linear, TestType> sim(set, table);
+  HeadOn<TestType> head_on;
+  auto& sim = head_on.sim;
   auto ps = sim.particles();
-  auto hv = vrut_test::to_host(ps.velocity);
-  hv(0) = {v0, 0.0};
-  hv(1) = {-v0, 0.0};
-  Kokkos::deep_copy(ps.velocity, hv);
   auto overlap = [&] {
     auto x = vrut_test::to_host(ps.position);
     return 2.0 * r - norm(x(1) - x(0));
