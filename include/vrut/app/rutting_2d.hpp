@@ -66,6 +66,7 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
     throw std::invalid_argument("--image gives the specimens: --seed and --seeds do not go with it");
   vrut::SpecimenSettings ss = specimen_cli::to_settings(so);
   o.mat.least_film = least_film_m(o.least_film, ss.gradation, ss.mix);
+  scale_mastic_by_filler(o, ss.gradation, ss.mix);
   // Everything checkable is checked before the specimen is made.
   mat.mastic.validate();
   vrut::validate_poisson(mat.mastic_nu);
@@ -216,6 +217,8 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   j["stone_film"] = stone_film;
   j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
   j["least_film_um"] = mat.least_film * 1e6;  // a candidate (docs/validation.md); 0 in the model
+  j["mastic_by_filler"] = o.mastic_by_filler;  // a candidate (docs/validation.md); none in the model
+  j["mastic_scale"] = o.mastic_scale;
   j["wall_seconds"] = wall_seconds;
   j["mpi_ranks"] = session.size();
   j["backend"] = backend;

@@ -103,6 +103,7 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   vrut::TimeShift{num.shift};
   vrut::SpecimenSettings3 ss = specimen_cli::to_settings3(o.so, o.o3);
   o.mat.least_film = least_film_m(o.least_film, ss.gradation, ss.mix);
+  scale_mastic_by_filler(o, ss.gradation, ss.mix);
   wt.validate(ss.placement.width * 1e-3);
   vrut::rutting_table3(mat, 2e-3 * ss.sphere_radius, num.shift);  // refuses what 3D cannot run, before any output
   const std::vector<std::uint64_t> seeds =
@@ -264,6 +265,8 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   j["stone_film"] = o.stone_film;
   j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
   j["least_film_um"] = mat.least_film * 1e6;  // a candidate (docs/validation.md); 0 in the model
+  j["mastic_by_filler"] = o.mastic_by_filler;  // a candidate (docs/validation.md); none in the model
+  j["mastic_scale"] = o.mastic_scale;
   j["calibrated"] = false;  // 3D fits no constant on 2# (docs/validation.md, "The factor at 1 mm")
   j["wall_seconds"] = wall_seconds;
   j["backend"] = o.backend;

@@ -11,6 +11,7 @@
 #include <vrut/io/checkpoint.hpp>
 #include <vrut/protocol/rutting.hpp>
 #include <vrut/specimen/binder_film.hpp>
+#include <vrut/specimen/filler_mastic.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -35,6 +36,8 @@ struct RunOptions {
   std::string backend = "openmp", out = "out/rutting", conversion = "seed", stone_film = "per-contact", seeds_text;
   std::string section = "longitudinal";  // --section (wt.transverse)
   std::string least_film = "none";  // --least-film: none, binder or micrometres (least_film_m)
+  std::string mastic_by_filler = "none";  // --mastic-by-filler: none or the filler's Rigden voids (mastic_filler_scale)
+  double mastic_scale = 1.0;              // the factor --mastic-by-filler gave the mastic (1 with none)
   int threads = 0;
   bool force = false, exact_stones = false;
   double checkpoint_every = 0.0;
@@ -84,6 +87,35 @@ inline double least_film_m(const std::string& text, const vrut::Gradation& g, co
   if (used != text.size() || !(um >= 0.0) || !std::isfinite(um))
     throw std::invalid_argument("--least-film: '" + text + "' is none, binder or a thickness in micrometres (>= 0)");
   return um * 1e-6;
+}
+
+// --mastic-by-filler: none (every mix on the one mastic, the model), or the
+// Rigden voids of the filler, a fraction: the factor on every Burger's
+// constant of this mix's mastic, its filler's stiffening over that of 2#,
+// the mix the mastic was calibrated on (specimen/filler_mastic.hpp). A
+// candidate of docs/validation.md, round four, not the model.
+inline double mastic_filler_scale(const std::string& text, const vrut::Gradation& g, const vrut::MixVolumetrics& mix) {
+  if (text == "none") return 1.0;
+  std::size_t used = 0;
+  double voids = -1.0;
+  try {
+    voids = std::stod(text, &used);
+  } catch (const std::logic_error&) {
+    used = 0;
+  }
+  if (used != text.size() || !(voids > 0.0 && voids < 1.0))
+    throw std::invalid_argument("--mastic-by-filler: '" + text +
+                                "' is none or the filler's Rigden voids, a fraction between 0 and 1");
+  return vrut::mastic_scale_by_filler(g, vrut::builtin_gradation(2), mix, voids);
+}
+
+// The mastic scaled by --mastic-by-filler's factor (vrut::scale_mastic).
+inline void scale_mastic_by_filler(RunOptions& o, const vrut::Gradation& g, const vrut::MixVolumetrics& mix) {
+  o.mastic_scale = mastic_filler_scale(o.mastic_by_filler, g, mix);
+  if (o.mastic_by_filler == "none") return;
+  if (!o.io.images.empty())
+    throw std::invalid_argument("--mastic-by-filler needs the mix's filler content from --gradation: an image does not give it");
+  vrut::scale_mastic(o.mat, o.mastic_scale);
 }
 
 // Options that a resumed run may change: where and how fast it runs, not what.
@@ -150,6 +182,20 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
           least_film_m(v == "binder" ? "0" : v, vrut::builtin_gradation(2), vrut::MixVolumetrics{});
         } catch (const std::invalid_argument& e) {
           return std::string(e.what()).substr(std::string("--least-film: ").size());  // CLI11 names the option
+        }
+        return std::string();
+      })
+      ->capture_default_str()->group("Materials");
+  app.add_option("--mastic-by-filler", o.mastic_by_filler,
+                 "a candidate, not the model: each mix's mastic stiffened by its filler (passing 0.075 mm, from "
+                 "--gradation; below its smallest sieve the 0.45-power line) over 2#'s, by Krieger-Dougherty: none, "
+                 "or the filler's Rigden voids as a fraction (EN 13043 allows 0.28 to 0.45; docs/validation.md)")
+      ->check([](const std::string& v) {
+        try {
+          mastic_filler_scale(v, vrut::builtin_gradation(2), vrut::MixVolumetrics{});
+        } catch (const std::invalid_argument& e) {
+          const std::string what = e.what(), prefix = "--mastic-by-filler: ";
+          return what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what;  // CLI11 names the option
         }
         return std::string();
       })

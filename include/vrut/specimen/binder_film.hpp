@@ -14,11 +14,11 @@
 // Assumptions (the source gives neither):
 //   - the gradation below 2.36 mm (below its smallest sieve, where a table
 //     gives finer ones) follows the 0.45-power maximum-density line through
-//     that sieve's point, P(d) = P(2.36) (d / 2.36)^0.45 (the FHWA
-//     0.45-power chart), down to 0.075 mm;
+//     that sieve's point, down to 0.075 mm (specimen/fine_gradation.hpp);
 //   - no binder is absorbed into the stones (P_be = the asphalt content),
 //     and G_b = 1.03.
 // Host-only; mm, micrometres.
+#include <vrut/specimen/fine_gradation.hpp>
 #include <vrut/specimen/gradation.hpp>
 #include <vrut/specimen/stereology.hpp>
 
@@ -43,16 +43,10 @@ inline BinderFilm binder_film(const Gradation& g, const MixVolumetrics& mix, dou
   if (!(binder_specific_gravity > 0.0)) throw std::invalid_argument("the binder's specific gravity must be positive");
   const double effective = mix.asphalt_content - absorbed_binder;
   if (!(effective > 0.0)) throw std::invalid_argument("the binder film needs some effective binder");
-  // Below the gradation's smallest sieve (2.36 mm for the built-in mixes),
-  // the 0.45-power line through its point.
-  const double smallest = g.sieve_mm.back(), at_smallest = g.passing.back();
-  if (smallest > 2.36)
-    throw std::invalid_argument("the binder film needs the gradation " + g.name + " down to 2.36 mm at least");
   BinderFilm f;
   f.surface_area = BinderFilm::total_factor;
   for (std::size_t i = 0; i < f.sieve_mm.size(); ++i) {
-    const double d = f.sieve_mm[i];
-    f.passing[i] = d >= smallest ? g.passing_at(d) : at_smallest * std::pow(d / smallest, 0.45);
+    f.passing[i] = fine_passing_percent(g, f.sieve_mm[i]);  // below 2.36 mm, the 0.45-power line
     f.surface_area += f.passing[i] / 100.0 * f.factor[i];
   }
   const double binder_percent = 100.0 * effective, aggregate_percent = 100.0 * (1.0 - mix.asphalt_content);

@@ -23,6 +23,17 @@ namespace vrut {
 using RuttingLaw = Choice<BurgersFilmBonded, DampedLinearBonded>;
 using RuttingWallLaw = DampedLinear;
 
+// A mix's mastic stiffer or softer by k (every Burger's constant times k:
+// under rigid fillers a suspension's moduli and viscosities scale alike),
+// and the rigid stones' contact ratio divided by k, so that the stones' and
+// walls' spring (the ratio times the mastic's E1 t) stays where it was:
+// only the mastic changes (specimen/filler_mastic.hpp).
+inline void scale_mastic(RuttingMaterials& m, double k) {
+  if (!(k > 0.0) || !std::isfinite(k)) throw std::invalid_argument("the mastic's scale must be positive and finite");
+  m.mastic.E1 *= k, m.mastic.eta1 *= k, m.mastic.E2 *= k, m.mastic.eta2 *= k;
+  m.stone_contact_ratio /= k;
+}
+
 // The contact table's group of a stone disk: each stone colour holds one
 // group per reach bin where the film is per contact, one otherwise.
 inline int stone_group(const RuttingMaterials& m, int colour, double reach) {
