@@ -72,19 +72,25 @@ struct RunOptions {
   }
 };
 
+// A number that is the whole of text; NaN when it is not one.
+inline double whole_number(const std::string& text) {
+  std::size_t used = 0;
+  double value = std::nan("");
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::logic_error&) {
+    return std::nan("");
+  }
+  return used == text.size() ? value : std::nan("");
+}
+
 // --least-film's thickness, m: none (0), binder (two binder films of the
 // mix, one on each stone: specimen/binder_film.hpp), or micrometres.
 inline double least_film_m(const std::string& text, const vrut::Gradation& g, const vrut::MixVolumetrics& mix) {
   if (text == "none") return 0.0;
   if (text == "binder") return 2.0 * vrut::binder_film(g, mix).thickness_um * 1e-6;
-  std::size_t used = 0;
-  double um = -1.0;
-  try {
-    um = std::stod(text, &used);
-  } catch (const std::logic_error&) {
-    used = 0;
-  }
-  if (used != text.size() || !(um >= 0.0) || !std::isfinite(um))
+  const double um = whole_number(text);
+  if (!(um >= 0.0) || !std::isfinite(um))
     throw std::invalid_argument("--least-film: '" + text + "' is none, binder or a thickness in micrometres (>= 0)");
   return um * 1e-6;
 }
@@ -96,14 +102,8 @@ inline double least_film_m(const std::string& text, const vrut::Gradation& g, co
 // candidate of docs/validation.md, round four, not the model.
 inline double mastic_filler_scale(const std::string& text, const vrut::Gradation& g, const vrut::MixVolumetrics& mix) {
   if (text == "none") return 1.0;
-  std::size_t used = 0;
-  double voids = -1.0;
-  try {
-    voids = std::stod(text, &used);
-  } catch (const std::logic_error&) {
-    used = 0;
-  }
-  if (used != text.size() || !(voids > 0.0 && voids < 1.0))
+  const double voids = whole_number(text);
+  if (!(voids > 0.0 && voids < 1.0))
     throw std::invalid_argument("--mastic-by-filler: '" + text +
                                 "' is none or the filler's Rigden voids, a fraction between 0 and 1");
   return vrut::mastic_scale_by_filler(g, vrut::builtin_gradation(2), mix, voids);
