@@ -32,16 +32,11 @@
 
 namespace vrut {
 
-// Anderson (1987): the filler's grains stay apart while at least 30 % of
-// the mortar is binder beyond what the dry-compacted filler's voids hold,
-// 1 - phi / phi_m >= 0.3.
-inline constexpr double least_free_binder = 0.3;
-
 struct FillerMastic {
   double filler_percent = 0.0;  // passing 0.075 mm, percent of the aggregate's mass
   double phi = 0.0;             // the filler's volume fraction of the filler-binder mastic
   double phi_m = 0.0;           // its maximum packing, 1 - the Rigden voids
-  double free_binder = 0.0;     // 1 - phi / phi_m
+  double free_binder = 0.0;     // 1 - phi / phi_m; Anderson (1987): the grains stay apart from 0.3 up
   double stiffening = 0.0;      // f(phi), against the bare binder
 };
 
