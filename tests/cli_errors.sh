@@ -214,6 +214,10 @@ rutting)
   expect "2" "--mastic-aggregate-factor-3d is for the 3D test" -- --mastic-aggregate-factor-3d 3 --out bad3
   expect "2" "--stone-packing is for the 3D test" -- --stone-packing random --out bad3
   expect "2" "too small for its stones" -- "${small3[@]}" --depth-mm 20 --out bad3
+  expect "2" "--plate patch is for the 3D test" -- --plate patch --out bad3
+  expect "2" "--section transverse is for 2D sections" -- "${small3[@]}" --section transverse --out bad3
+  expect "2" "patch needs a box at least 100 mm deep.*give --depth-mm 101.82" -- "${small3[@]}" --plate patch --out bad3
+  expect "1 2" "plate" -- "${small3[@]}" --plate disk --out bad3
   [[ -e "$work/bad3" ]] && { echo "FAIL: output folder bad3 written after an error"; failures=$((failures + 1)); }
   # The runs that succeed, which the sanitizer build (VRUT_ERRORS_ONLY) leaves out: too slow there.
   if [[ -z ${VRUT_ERRORS_ONLY:-} ]]; then

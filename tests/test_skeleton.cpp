@@ -176,4 +176,17 @@ TEMPLATE_LIST_TEST_CASE("3D: the load path across a cut, the same three columns 
   vrut::SkeletonCut cut = cut_across_columns();
   const vrut::SkeletonSnapshot all = vrut::skeleton_snapshot(sim, c.table, 0, cut, c.stone);
   check_columns_weights(all, c);
+
+  // Under a patch plate (its band across the depth): the columns stand at
+  // mid-depth, so a band about them, or about their image a period away,
+  // takes all they carry; a band beside them takes none of it.
+  for (const double centre : {0.5 * depth, 1.5 * depth}) {
+    cut.depth = vrut::DepthBand{centre, 0.2 * depth, depth};
+    check_columns_weights(vrut::skeleton_snapshot(sim, c.table, 0, cut, c.stone), c);
+  }
+  cut.depth = vrut::DepthBand{0.1 * depth, 0.2 * depth, depth};
+  const vrut::SkeletonSnapshot beside = vrut::skeleton_snapshot(sim, c.table, 0, cut, c.stone);
+  CHECK(beside.load.stone_spring == 0.0);
+  CHECK(beside.load.stone_film == 0.0);
+  CHECK(beside.load.mastic == 0.0);
 }

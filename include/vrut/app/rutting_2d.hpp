@@ -53,6 +53,9 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
     throw std::invalid_argument("--stone-packing is for the 3D test (--dim 3)");
   if (o.mastic_aggregate_factor_3d != RunOptions().mastic_aggregate_factor_3d)
     throw std::invalid_argument("--mastic-aggregate-factor-3d is for the 3D test (--dim 3)");
+  if (o.plate != RunOptions().plate)
+    throw std::invalid_argument("--plate patch is for the 3D test (--dim 3): a 2D section's plate spans its "
+                                "thickness (see --section transverse)");
   o.convert();
   const auto& so = o.so;
   const auto& wt = o.wt;

@@ -86,9 +86,10 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   if (o.so.disk_radius_mm != defaults.so.disk_radius_mm) only_2d("--disk-radius-mm");
   if (o.so.placement != defaults.so.placement) only_2d("--placement");
   if (o.so.binder_film_mm != defaults.so.binder_film_mm) only_2d("--binder-film-mm");
-  if (o.wt.transverse)
+  if (o.section != RunOptions().section)  // wt.transverse is set by convert(), below
     throw std::invalid_argument("--section transverse is for 2D sections; the 3D plate already spans the wheel's "
-                                "contact length along the travel and the box's depth across it");
+                                "contact length along the travel and the box's depth across it (or the wheel's "
+                                "width, with --plate patch)");
   if (o.mat.mastic_aggregate_factor != defaults.mat.mastic_aggregate_factor)
     throw std::invalid_argument("--mastic-aggregate-factor is the 2D model's (fitted on 2# with the films between "
                                 "stones); in 3D give --mastic-aggregate-factor-3d");
@@ -105,6 +106,15 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   o.mat.least_film = least_film_m(o.least_film, ss.gradation, ss.mix);
   scale_mastic_by_filler(o, ss.gradation, ss.mix);
   wt.validate(ss.placement.width * 1e-3);
+  const double cell = vrut::fcc_cell(ss.sphere_radius), least_depth = 2.0 * o.wheel_width_mm;
+  const double rounded_depth = vrut::fcc_cells_deep(ss.placement.depth, ss.sphere_radius) * cell;
+  if (wt.patch && rounded_depth < least_depth * (1.0 - 1e-9)) {
+    char text[260];
+    std::snprintf(text, sizeof text, "--plate patch needs a box at least %g mm deep (twice the wheel's %g mm "
+                  "width), so the mix can flow out past the wheel's edges: this one is %.2f mm (whole FCC cells of "
+                  "%.3f mm); give --depth-mm %.2f", least_depth, o.wheel_width_mm, rounded_depth, cell, std::ceil(least_depth / cell - 1e-9) * cell);
+    throw std::invalid_argument(text);
+  }
   vrut::rutting_table3(mat, 2e-3 * ss.sphere_radius, num.shift);  // refuses what 3D cannot run, before any output
   const std::vector<std::uint64_t> seeds =
       o.seeds_text.empty() ? std::vector<std::uint64_t>{ss.seed} : cli::parse_seed_list(o.seeds_text);
@@ -176,7 +186,8 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
                  ensemble ? "s" : "", ss.gradation.name.c_str(), sp.width, sp.height, sp.depth, all_spheres,
                  session.size() > 1 ? (" on rank 0 of " + std::to_string(session.size())).c_str()
                                     : (ensemble ? " in all" : ""),
-                 sp.placement.stones.size(), ensemble ? " in the first" : "", wt.contact_length() * 1e3, sp.depth,
+                 sp.placement.stones.size(), ensemble ? " in the first" : "", wt.contact_length() * 1e3,
+                 wt.patch ? wt.wheel_width * 1e3 : sp.depth,
                  wt.loading_time(), wt.loading_time() / num.shift);
   int used_threads = 1;
   // Reported in permille of the test; read as minutes of the test a second.
@@ -273,7 +284,8 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   j["threads"] = used_threads;
   j["particle_steps_per_second"] = speed;
   j["contact_length_mm"] = wt.contact_length() * 1e3;
-  j["plate_mm"] = {wt.contact_length() * 1e3, sp.depth};
+  j["plate_mm"] = {wt.contact_length() * 1e3, wt.patch ? wt.wheel_width * 1e3 : sp.depth};
+  j["plate"] = wt.patch ? "patch" : "strip";  // a patch is a candidate (docs/validation.md); the strip the model
   j["loading_time_s"] = wt.loading_time();
   add_shared_summary(j, res, report, interrupted, minutes_done);
   j["specimen"] = specimen_cli::specimen3_summary(sp);

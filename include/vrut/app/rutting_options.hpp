@@ -35,6 +35,7 @@ struct RunOptions {
   vrut::RuttingNumerics num;
   std::string backend = "openmp", out = "out/rutting", conversion = "seed", stone_film = "per-contact", seeds_text;
   std::string section = "longitudinal";  // --section (wt.transverse)
+  std::string plate = "strip";           // --plate (wt.patch)
   std::string least_film = "none";  // --least-film: none, binder or micrometres (least_film_m)
   std::string mastic_by_filler = "none";  // --mastic-by-filler: none or the filler's Rigden voids (mastic_filler_scale)
   double mastic_scale = 1.0;              // the factor --mastic-by-filler gave the mastic (1 with none)
@@ -69,6 +70,7 @@ struct RunOptions {
     wt.wheel_width = wheel_width_mm * 1e-3;
     wt.travel = travel_mm * 1e-3;
     wt.transverse = section == "transverse";
+    wt.patch = plate == "patch";
   }
 };
 
@@ -226,6 +228,11 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
                  "it (transverse: the plate is the wheel's width; an experiment of docs/validation.md, round four, "
                  "not the model)")
       ->check(CLI::IsMember({"longitudinal", "transverse"}))->capture_default_str()->group("Loading");
+  app.add_option("--plate", o.plate,
+                 "3D: the plate a strip across the periodic depth (the model's) or the tyre's patch, the contact "
+                 "length by the wheel's width at mid-depth, in a box deeper than the wheel (give --depth-mm; an "
+                 "experiment of docs/validation.md, round four, not the model)")
+      ->check(CLI::IsMember({"strip", "patch"}))->capture_default_str()->group("Loading");
   app.add_option("--travel-mm", o.travel_mm, "wheel travel")->check(cli::finite_positive())->capture_default_str()->group("Loading");
   app.add_option("--passes-per-minute", wt.passes_per_minute, "N")->check(cli::finite_positive())->capture_default_str()->group("Loading");
   app.add_option("--minutes", wt.minutes, "test duration (more than the DS window's start, 45)")

@@ -17,8 +17,15 @@
 //     each other, so every contact between stone spheres is one between
 //     two stones: 3D needs no stone colours (2D has them for the method's
 //     bonded stones, specimen/colouring.hpp);
-//   - the mould and the plate on the same spring, frictionless by default.
+//   - the mould and the plate on the same spring, frictionless by default;
+//   - with WheelTracking::patch, a plate the tyre's patch (l by the wheel's
+//     width d, at mid-depth) in place of the strip across the depth. The
+//     walls see a sphere's continuous path, not its image, so the box must
+//     be at least twice the wheel's width deep: a sphere would have to
+//     travel (depth - d) / 2 across the depth, farther than the mix flows in
+//     a test, to meet the patch's next image, which the plate does not hold.
 #include <vrut/core/simulation.hpp>
+#include <vrut/protocol/rutting/depth_band.hpp>
 #include <vrut/protocol/rutting/loading.hpp>
 #include <vrut/protocol/rutting/materials.hpp>
 #include <vrut/protocol/rutting/result.hpp>
@@ -132,7 +139,8 @@ struct BoxSetup {
     if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
     num.validate();
     if (wt.transverse)
-      throw std::invalid_argument("a transverse section is 2D's; the 3D plate spans the box's depth");
+      throw std::invalid_argument("a transverse section is 2D's; the 3D plate spans the box's depth (or the "
+                                  "wheel's width, a patch)");
     const Specimen3& first = specimens.front();
     for (const Specimen3& sp : specimens) {
       wt.validate(sp.width * 1e-3);
@@ -141,6 +149,13 @@ struct BoxSetup {
         throw std::invalid_argument("a 3D ensemble's specimens must share one box and one sphere size");
     }
     width = first.width * 1e-3, height = first.height * 1e-3, depth = first.depth * 1e-3;
+    if (wt.patch && depth < 2.0 * wt.wheel_width * (1.0 - 1e-9)) {
+      char text[240];
+      std::snprintf(text, sizeof text, "a patch plate (the wheel's %g mm width) needs a box at least twice as deep: "
+                    "this one is %g mm (give --depth-mm %g or more; the depth is rounded to whole FCC cells)",
+                    wt.wheel_width * 1e3, first.depth, 2.0 * wt.wheel_width * 1e3);
+      throw std::invalid_argument(text);
+    }
     const double r = first.spheres.radius * 1e-3;
     d = 2.0 * r;
     endless = 50.0 * depth;
@@ -176,21 +191,28 @@ struct BoxSetup {
     sim.add_wall(Wall3{{width, mid.y, mid.z}, {0.0, 0.0, endless}, {0.0, height, 0.0}, {}}, law, {}, e);
   }
 
+  // The plate's extent across the depth: the depth (a strip) or the wheel's width (a patch).
+  double plate_depth() const { return wt.patch ? wt.wheel_width : depth; }
+  // Where the plate lies across the depth (the skeleton's cut and the plate's first height look only there).
+  DepthBand plate_band() const { return wt.patch ? DepthBand{mid.z, 0.5 * wt.wheel_width, depth} : DepthBand{}; }
+
   // The plate at height `top`, l long at mid-span and endless along the
-  // depth (its pressure is its force over l times the depth); its point, the
-  // centre. Its mass ten times the least that keeps it stable on stiff
-  // contacts with every sphere of the top layer under it (one per d^2).
+  // depth, or the patch's width at mid-depth (its pressure is its force over
+  // l times its depth); its point, the centre. Its mass ten times the least
+  // that keeps it stable on stiff contacts with every sphere of the top
+  // layer under it (one per d^2).
   Wall3 plate(int, double top) const {
-    return Wall3{{mid.x, top, mid.z}, {0.5 * wt.contact_length(), 0.0, 0.0}, {0.0, 0.0, endless}, {}};
+    return Wall3{{mid.x, top, mid.z}, {0.5 * wt.contact_length(), 0.0, 0.0},
+                 {0.0, 0.0, wt.patch ? 0.5 * wt.wheel_width : endless}, {}};
   }
   static Vec3 plate_point(const Wall3& w) { return w.centre; }
   double plate_mass(double k_wall, double dt, int) const {
     const double l = wt.contact_length();
-    return 10.0 * k_wall * (l * depth / (d * d)) * dt * dt / 4.0;
+    return 10.0 * k_wall * (l * plate_depth() / (d * d)) * dt * dt / 4.0;
   }
-  double plate_area() const { return wt.contact_length() * depth; }
+  double plate_area() const { return wt.contact_length() * plate_depth(); }
   LoadControl::params_type plate_load(double fraction, double mass) const {
-    return LoadControl::for_stress(wt.pressure * fraction, wt.contact_length(), depth, mass, 0.0);
+    return LoadControl::for_stress(wt.pressure * fraction, wt.contact_length(), plate_depth(), mass, 0.0);
   }
 
   // A sphere at the end: where it is and how far it moved while loaded (mm).

@@ -131,7 +131,8 @@ std::vector<typename Setup::result_type> run_rutting_test(const Setup& setup, co
       const double r = Setup::radius_mm(specimens[e]) * 1e-3;
       const auto [first, last] = sim.specimen_range(e);
       for (int i = first; i < last; ++i)
-        if (x(i).x + r > res.plate_x0 && x(i).x - r < res.plate_x1) top[e] = std::max(top[e], x(i).y + r);
+        if (x(i).x + r > res.plate_x0 && x(i).x - r < res.plate_x1 && in_depth_band(setup.plate_band(), x(i), r))
+          top[e] = std::max(top[e], x(i).y + r);
       plate_mass[e] = setup.plate_mass(k_wall, dt, e);
       plate[e] = sim.add_wall(setup.plate(e, top[e]), wall_law, setup.plate_load(0.0, plate_mass[e]), e);
     }
@@ -144,6 +145,7 @@ std::vector<typename Setup::result_type> run_rutting_test(const Setup& setup, co
     cut.height = 0.5 * Setup::plate_point(sim.wall(plate[e])).y;
     cut.x0 = result(e).plate_x0;
     cut.x1 = result(e).plate_x1;
+    cut.depth = setup.plate_band();
     cut.diameter = 2e-3 * Setup::radius_mm(specimens[e]);
     return skeleton_snapshot(sim, setup.table, e, cut, Setup::stone_of(specimens[e]));
   };

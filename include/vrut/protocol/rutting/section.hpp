@@ -5,6 +5,7 @@
 // the travel: test.hpp, transverse), carrying the wheel's pressure. Where
 // stones meet through a film, each stone's disks get its colour's group.
 #include <vrut/core/simulation.hpp>
+#include <vrut/protocol/rutting/depth_band.hpp>
 #include <vrut/protocol/rutting/loading.hpp>
 #include <vrut/protocol/rutting/materials.hpp>
 #include <vrut/protocol/rutting/result.hpp>
@@ -54,6 +55,7 @@ struct SectionSetup {
       : specimens(s), wt(w), mat(m), t(w.wheel_width) {
     if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
     num.validate();
+    if (wt.patch) throw std::invalid_argument("a patch plate is 3D's; a 2D section's plate spans its thickness");
     const int count = static_cast<int>(specimens.size());
     for (const Specimen& sp : specimens) wt.validate(sp.width * 1e-3);
     // Where stones meet through a film, each stone's disks get its colour's
@@ -114,6 +116,8 @@ struct SectionSetup {
     return 10.0 * k_wall * (wt.plate_length() / (2.0 * r)) * dt * dt / 4.0;
   }
   double plate_area() const { return wt.plate_length() * t; }
+  // A section has no depth: the plate spans it (depth_band.hpp).
+  static DepthBand plate_band() { return {}; }
   // The dead load at `fraction` of the wheel's: its pressure, either section.
   LoadControl::params_type plate_load(double fraction, double mass) const {
     const double stress = wt.plate_force() * fraction / (wt.contact_length() * t);

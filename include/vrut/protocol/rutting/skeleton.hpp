@@ -20,9 +20,11 @@
 // bond). Over the whole width those forces sum to what the part above
 // passes down: the plate's load and the weight above, less what the
 // mould's walls hold (nothing where they are frictionless). Under the plate
-// alone (the contact's point between the plate's ends), as measured here,
+// alone (the contact's point between the plate's ends, and in 3D within
+// its width across the depth), as measured here,
 // the cut is not a closed free body: the load spreads sideways past the
 // plate's ends. The shares are of what crosses under the plate.
+#include <vrut/protocol/rutting/depth_band.hpp>
 #include <vrut/protocol/rutting/materials.hpp>
 #include <vrut/protocol/rutting/skeleton_record.hpp>
 #include <vrut/specimen/specimen.hpp>
@@ -42,6 +44,7 @@ static_assert(film_census_bins == film_reach_classes + 1, "the census has a bin 
 struct SkeletonCut {
   double height = 0.0;         // the cut's
   double x0 = 0.0, x1 = 0.0;   // the plate's ends
+  DepthBand depth;             // 3D: where the plate lies across the depth (all of it: a strip)
   double diameter = 0.0;
 };
 
@@ -125,8 +128,8 @@ SkeletonSnapshot skeleton_snapshot(const Sim& sim, const AssignmentTable<Rutting
       const bool i_above = above(i), j_above = above(j);
       if (i_above == j_above) continue;  // within one stone, or on one side
       // The contact's point: the middle of the overlap (or gap) on the line of centres.
-      const double point_x = x(i).x + (r(i) - 0.5 * overlap) / dist * d.x;
-      if (point_x < cut.x0 || point_x > cut.x1) continue;
+      const auto point = x(i) + ((r(i) - 0.5 * overlap) / dist) * d;
+      if (point.x < cut.x0 || point.x > cut.x1 || !in_depth_band(cut.depth, point)) continue;
       // The part above takes the force from below.
       const double up = j_above ? force.y : -force.y;
       if (c == ContactClass::stone_spring)

@@ -26,6 +26,13 @@ struct WheelTracking {
   // thickness t = d in both: every force, stiffness and mass of the section
   // scales with t, so t does not enter the answer.
   bool transverse = false;
+  // The 3D plate: a strip across the box's periodic depth (the model's: an
+  // endless wheel, the mix under it held in plane strain), or the tyre's
+  // patch, l along the travel and d across it at mid-depth, so the mix can
+  // flow out sideways past the wheel's edges, as in the laboratory's 300 mm
+  // slab (an experiment of docs/validation.md, round four). The patch
+  // carries the wheel's own weight, p l d; the strip p l times the depth.
+  bool patch = false;
 
   double contact_length() const { return wheel_mass * gravity / (pressure * wheel_width); }
   double loading_time() const { return minutes * 60.0 * contact_length() / travel; }  // s, cumulative under the wheel
