@@ -153,7 +153,7 @@ TEST_CASE("3D: a patch plate carries the wheel's weight over l by the wheel's wi
   const std::vector<vrut::Specimen3> specimens{vrut::generate_specimen3(s)};
   const double depth = specimens[0].depth * 1e-3, wheel_weight = 78.0 * 9.81;
   REQUIRE(depth > 0.1);
-  vrut::WheelTracking wt;
+  const vrut::WheelTracking wt;
   const vrut::RuttingMaterials m = materials3();
   const vrut::RuttingNumerics n = numerics3();
   const double mass = 0.25;  // any: the load does not depend on it
@@ -163,8 +163,9 @@ TEST_CASE("3D: a patch plate carries the wheel's weight over l by the wheel's wi
   CHECK(strip.plate_band().contains(0.0));  // all of the depth
   CHECK(strip.plate(0, 0.05).half_v.z > 10.0 * depth);
 
-  wt.patch = true;
-  const vrut::BoxSetup patch(specimens, wt, m, n);
+  vrut::WheelTracking patch_wheel;  // its own: a BoxSetup keeps a reference to its WheelTracking
+  patch_wheel.patch = true;
+  const vrut::BoxSetup patch(specimens, patch_wheel, m, n);
   CHECK(patch.plate_load(1.0, mass).target_force == Approx(wheel_weight).epsilon(1e-12));
   CHECK(patch.plate_load(0.5, mass).target_force == Approx(0.5 * wheel_weight).epsilon(1e-12));
   CHECK(patch.plate_area() == Approx(wheel_weight / 0.7e6).epsilon(1e-12));
@@ -172,6 +173,8 @@ TEST_CASE("3D: a patch plate carries the wheel's weight over l by the wheel's wi
   CHECK(plate.centre.z == Approx(0.5 * depth).epsilon(1e-12));
   CHECK(plate.half_v.z == Approx(0.025).epsilon(1e-12));
   CHECK(vrut::area(plate) == Approx(patch.plate_area()).epsilon(1e-12));
+  // The plate's numerical mass keeps to the spheres it may bear on, one per d^2 of its area.
+  CHECK(patch.plate_mass(1e6, 1e-6, 0) == Approx(strip.plate_mass(1e6, 1e-6, 0) * 0.05 / depth).epsilon(1e-12));
   const vrut::DepthBand band = patch.plate_band();
   for (const double image : {-depth, 0.0, depth}) {
     CHECK(band.contains(0.5 * depth + 0.0249 + image));
@@ -183,7 +186,39 @@ TEST_CASE("3D: a patch plate carries the wheel's weight over l by the wheel's wi
   CHECK_FALSE(band.contains(0.0));
 
   const std::vector<vrut::Specimen3> shallow{vrut::generate_specimen3(vrut_test::small_box3(1, 1, 40.0))};
-  CHECK_THROWS_WITH(vrut::BoxSetup(shallow, wt, m, n), Catch::Contains("at least twice as deep"));
+  // 18 FCC cells of 2 mm spheres are the least at least 100 mm deep: 101.82 mm.
+  CHECK_THROWS_WITH(vrut::BoxSetup(shallow, patch_wheel, m, n),
+                    Catch::Contains("at least twice as deep") && Catch::Contains("give --depth-mm 101.82"));
+
+  // A sphere under the plate's span along the travel that has flowed across
+  // the periodic depth under the patch's image (a box's depth from the
+  // patch) stops the run; one beside the patch, or across the periodic face
+  // but short of the image, does not.
+  vrut::AssignmentTable<vrut::Linear> table(2);
+  table.set_all(vrut::linear_params(1e5, 0.0, 0.0));
+  vrut::Simulation3<vrut::Linear, Kokkos::DefaultHostExecutionSpace> sim(
+      vrut::to_particle_set(specimens[0], 2400.0, 2700.0), table, vrut::SimulationSettings3{}, {0.0});
+  const double x0 = 0.02 - 0.011, x1 = 0.02 + 0.011, mid = 0.5 * depth;
+  auto place = [&](vrut::Vec3 p) {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+    x(5) = p;
+    Kokkos::deep_copy(sim.particles().position, x);
+  };
+  for (const double z : {mid, mid + 0.030, mid - 0.030, -0.005, depth + 0.005}) {
+    place({0.02, 0.04, z});
+    INFO("z " << z);
+    CHECK_NOTHROW(vrut::check_clear_of_plate_images(sim, specimens, band, x0, x1, 9));
+  }
+  for (const double z : {mid - depth, mid + depth, mid - depth + 0.024}) {
+    place({0.02, 0.04, z});
+    INFO("z " << z);
+    CHECK_THROWS_WITH(vrut::check_clear_of_plate_images(sim, specimens, band, x0, x1, 9),
+                      Catch::Contains("by loading step 9 sphere 5 of specimen 0") &&
+                          Catch::Contains("under the patch plate's periodic image"));
+  }
+  place({0.035, 0.04, mid + depth});  // beyond the plate's span along the travel
+  CHECK_NOTHROW(vrut::check_clear_of_plate_images(sim, specimens, band, x0, x1, 9));
+  CHECK_NOTHROW(vrut::check_clear_of_plate_images(sim, specimens, vrut::DepthBand{}, x0, x1, 9));  // a strip
 }
 
 // A short run under the patch (alpha_T 1e5, as the command-line checks run

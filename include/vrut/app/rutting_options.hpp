@@ -230,8 +230,8 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
       ->check(CLI::IsMember({"longitudinal", "transverse"}))->capture_default_str()->group("Loading");
   app.add_option("--plate", o.plate,
                  "3D: the plate a strip across the periodic depth (the model's) or the tyre's patch, the contact "
-                 "length by the wheel's width at mid-depth, in a box deeper than the wheel (give --depth-mm; an "
-                 "experiment of docs/validation.md, round four, not the model)")
+                 "length by the wheel's width at mid-depth, in a box at least twice the wheel's width deep (give "
+                 "--depth-mm; an experiment of docs/validation.md, round four, not the model)")
       ->check(CLI::IsMember({"strip", "patch"}))->capture_default_str()->group("Loading");
   app.add_option("--travel-mm", o.travel_mm, "wheel travel")->check(cli::finite_positive())->capture_default_str()->group("Loading");
   app.add_option("--passes-per-minute", wt.passes_per_minute, "N")->check(cli::finite_positive())->capture_default_str()->group("Loading");

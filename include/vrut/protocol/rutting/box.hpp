@@ -19,11 +19,14 @@
 //     bonded stones, specimen/colouring.hpp);
 //   - the mould and the plate on the same spring, frictionless by default;
 //   - with WheelTracking::patch, a plate the tyre's patch (l by the wheel's
-//     width d, at mid-depth) in place of the strip across the depth. The
-//     walls see a sphere's continuous path, not its image, so the box must
-//     be at least twice the wheel's width deep: a sphere would have to
-//     travel (depth - d) / 2 across the depth, farther than the mix flows in
-//     a test, to meet the patch's next image, which the plate does not hold.
+//     width d, at mid-depth) in place of the strip across the depth: across
+//     the periodic depth, a row of wheels a box's depth apart. The walls see
+//     a sphere's continuous path, not its image, so the box must be at
+//     least twice the wheel's width deep: a sphere would have to travel
+//     about (depth - d) / 2 across the depth (less half a stone, for a
+//     stone placed across the periodic face) to come under the patch's
+//     image, which the plate does not hold; the run checks at every sample
+//     that none has (checks.hpp, check_clear_of_plate_images).
 #include <vrut/core/simulation.hpp>
 #include <vrut/protocol/rutting/depth_band.hpp>
 #include <vrut/protocol/rutting/loading.hpp>
@@ -34,6 +37,7 @@
 #include <vrut/specimen/specimen3.hpp>
 #include <vrut/specimen/stone_reach3.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -150,10 +154,11 @@ struct BoxSetup {
     }
     width = first.width * 1e-3, height = first.height * 1e-3, depth = first.depth * 1e-3;
     if (wt.patch && depth < 2.0 * wt.wheel_width * (1.0 - 1e-9)) {
-      char text[240];
+      const double cell = fcc_cell(first.spheres.radius), least = 2e3 * wt.wheel_width;  // mm
+      char text[260];
       std::snprintf(text, sizeof text, "a patch plate (the wheel's %g mm width) needs a box at least twice as deep: "
-                    "this one is %g mm (give --depth-mm %g or more; the depth is rounded to whole FCC cells)",
-                    wt.wheel_width * 1e3, first.depth, 2.0 * wt.wheel_width * 1e3);
+                    "this one is %.2f mm (whole FCC cells of %.3f mm); give --depth-mm %.2f",
+                    wt.wheel_width * 1e3, first.depth, cell, std::ceil(least / cell - 1e-9) * cell);
       throw std::invalid_argument(text);
     }
     const double r = first.spheres.radius * 1e-3;

@@ -6,11 +6,13 @@
 // (mould_particle_radius_mm, mould_particle_word, mould_position_text, found
 // by their argument types).
 #include <vrut/core/simulation.hpp>
+#include <vrut/protocol/rutting/depth_band.hpp>
 
 #include <Kokkos_Core.hpp>
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -43,6 +45,30 @@ void check_inside_moulds(Sim& sim, const std::vector<SpecimenT>& specimens, long
         throw SimulationUnstable(text, step);
       }
     }
+  }
+}
+
+// Throws when a sphere under a 3D patch plate's span along the travel (x0 to
+// x1, m) has flowed across the periodic depth under the patch's image, which
+// the plate does not hold (box.hpp): the box is too shallow for the run. A
+// strip plate (and a 2D section) has no image to reach. Called at every sample.
+template <class Sim, class SpecimenT>
+void check_clear_of_plate_images(Sim& sim, const std::vector<SpecimenT>& specimens, const DepthBand& band,
+                                 double x0, double x1, long step) {
+  if (!(band.half > 0.0)) return;
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  for (int e = 0; e < static_cast<int>(specimens.size()); ++e) {
+    const double r = mould_particle_radius_mm(specimens[e]) * 1e-3;
+    const auto [first, last] = sim.specimen_range(e);
+    for (int i = first; i < last; ++i)
+      if (x(i).x > x0 - r && x(i).x < x1 + r && in_band_image_only(band, x(i), r)) {
+        char text[600];
+        std::snprintf(text, sizeof text,
+                      "vrut: by loading step %ld %s %d of specimen %d is at %s mm, under the patch plate's periodic "
+                      "image a box's depth away, which the plate does not hold; give a deeper box (--depth-mm)",
+                      step, mould_particle_word(specimens[e]), i - first, e, mould_position_text(x(i)).c_str());
+        throw std::runtime_error(text);
+      }
   }
 }
 

@@ -27,4 +27,12 @@ inline bool in_depth_band(const DepthBand& band, const Vec3& x, double margin = 
   return band.contains(x.z, margin);
 }
 
+// Whether a particle (its continuous path, radius r) lies within the band
+// only through a periodic image: under a patch's image, which a plate (a
+// wall, seeing the continuous path) does not hold.
+inline bool in_band_image_only(const DepthBand&, const Vec2&, double) { return false; }
+inline bool in_band_image_only(const DepthBand& band, const Vec3& x, double r) {
+  return band.half > 0.0 && band.contains(x.z, r) && !(std::abs(x.z - band.centre) <= band.half + r);
+}
+
 }  // namespace vrut

@@ -194,6 +194,7 @@ std::vector<typename Setup::result_type> run_rutting_test(const Setup& setup, co
   };
   auto take_sample = [&](long s, double time) {
     check_inside_moulds(sim, specimens, s, dt);
+    check_clear_of_plate_images(sim, specimens, setup.plate_band(), result(0).plate_x0, result(0).plate_x1, s);
     const auto& walls = sim.all_walls();
     const std::vector<vector> impulse = sim.all_wall_impulses();
     for (int e = 0; e < count; ++e) {
