@@ -113,7 +113,8 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
     std::snprintf(text, sizeof text, "--plate patch needs a box at least %g mm deep (twice the wheel's %g mm "
                   "width), so the mix can flow out past the wheel's edges: this one is %.2f mm (whole FCC cells of "
                   "%.3f mm); give --depth-mm %.2f",
-                  least_depth, o.wheel_width_mm, rounded_depth, cell, std::ceil(least_depth / cell - 1e-9) * cell);
+                  least_depth, o.wheel_width_mm, rounded_depth, cell,
+                  vrut::least_patch_depth_mm(o.wheel_width_mm, ss.sphere_radius));
     throw std::invalid_argument(text);
   }
   vrut::rutting_table3(mat, 2e-3 * ss.sphere_radius, num.shift);  // refuses what 3D cannot run, before any output

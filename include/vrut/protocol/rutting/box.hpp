@@ -73,6 +73,14 @@ inline AssignmentTable<RuttingLaw> rutting_table3(const RuttingMaterials& m, dou
   return rutting_table_with(m, shift, scales, 1, true);
 }
 
+// The least depth (mm) a box under a patch plate may have: twice the wheel's
+// width, rounded up to whole FCC cells of spheres of radius_mm (the depth
+// the specimen is given, fcc_cells_deep).
+inline double least_patch_depth_mm(double wheel_width_mm, double radius_mm) {
+  const double cell = fcc_cell(radius_mm);
+  return std::ceil(2.0 * wheel_width_mm / cell - 1e-9) * cell;
+}
+
 // Each stone that holds a sphere is one body, numbered in the stones'
 // order; mastic spheres are free (-1).
 inline std::vector<int> stone_bodies3(const Specimen3& sp) {
@@ -154,11 +162,11 @@ struct BoxSetup {
     }
     width = first.width * 1e-3, height = first.height * 1e-3, depth = first.depth * 1e-3;
     if (wt.patch && depth < 2.0 * wt.wheel_width * (1.0 - 1e-9)) {
-      const double cell = fcc_cell(first.spheres.radius), least = 2e3 * wt.wheel_width;  // mm
       char text[260];
       std::snprintf(text, sizeof text, "a patch plate (the wheel's %g mm width) needs a box at least twice as deep: "
                     "this one is %.2f mm (whole FCC cells of %.3f mm); give --depth-mm %.2f",
-                    wt.wheel_width * 1e3, first.depth, cell, std::ceil(least / cell - 1e-9) * cell);
+                    wt.wheel_width * 1e3, first.depth, fcc_cell(first.spheres.radius),
+                    least_patch_depth_mm(wt.wheel_width * 1e3, first.spheres.radius));
       throw std::invalid_argument(text);
     }
     const double r = first.spheres.radius * 1e-3;

@@ -130,8 +130,9 @@ std::vector<typename Setup::result_type> run_rutting_test(const Setup& setup, co
       res.plate_x1 = 0.5 * (width + l);
       const double r = Setup::radius_mm(specimens[e]) * 1e-3;
       const auto [first, last] = sim.specimen_range(e);
+      const DepthBand band = setup.plate_band();
       for (int i = first; i < last; ++i)
-        if (x(i).x + r > res.plate_x0 && x(i).x - r < res.plate_x1 && in_depth_band(setup.plate_band(), x(i), r))
+        if (x(i).x + r > res.plate_x0 && x(i).x - r < res.plate_x1 && in_depth_band(band, x(i), r))
           top[e] = std::max(top[e], x(i).y + r);
       plate_mass[e] = setup.plate_mass(k_wall, dt, e);
       plate[e] = sim.add_wall(setup.plate(e, top[e]), wall_law, setup.plate_load(0.0, plate_mass[e]), e);
