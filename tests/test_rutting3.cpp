@@ -188,7 +188,7 @@ TEST_CASE("3D: a patch plate carries the wheel's weight over l by the wheel's wi
   const std::vector<vrut::Specimen3> shallow{vrut::generate_specimen3(vrut_test::small_box3(1, 1, 40.0))};
   // 18 FCC cells of 2 mm spheres are the least at least 100 mm deep: 101.82 mm.
   CHECK_THROWS_WITH(vrut::BoxSetup(shallow, patch_wheel, m, n),
-                    Catch::Contains("at least twice as deep") && Catch::Contains("give --depth-mm 101.82"));
+                    Catch::Contains("(twice as deep as the wheel") && Catch::Contains("give --depth-mm 101.82"));
 
   // A sphere under the plate's span along the travel that has flowed across
   // the periodic depth under the patch's image (a box's depth from the

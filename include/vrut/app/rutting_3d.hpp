@@ -106,17 +106,10 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   o.mat.least_film = least_film_m(o.least_film, ss.gradation, ss.mix);
   scale_mastic_by_filler(o, ss.gradation, ss.mix);
   wt.validate(ss.placement.width * 1e-3);
-  const double cell = vrut::fcc_cell(ss.sphere_radius), least_depth = 2.0 * o.wheel_width_mm;
-  const double rounded_depth = vrut::fcc_cells_deep(ss.placement.depth, ss.sphere_radius) * cell;
-  if (wt.patch && rounded_depth < least_depth * (1.0 - 1e-9)) {
-    char text[260];
-    std::snprintf(text, sizeof text, "--plate patch needs a box at least %g mm deep (twice the wheel's %g mm "
-                  "width), so the mix can flow out past the wheel's edges: this one is %.2f mm (whole FCC cells of "
-                  "%.3f mm); give --depth-mm %.2f",
-                  least_depth, o.wheel_width_mm, rounded_depth, cell,
-                  vrut::least_patch_depth_mm(o.wheel_width_mm, ss.sphere_radius));
-    throw std::invalid_argument(text);
-  }
+  if (wt.patch)
+    vrut::check_patch_depth("--plate patch",
+                            vrut::fcc_cells_deep(ss.placement.depth, ss.sphere_radius) * vrut::fcc_cell(ss.sphere_radius),
+                            o.wheel_width_mm, ss.sphere_radius);
   vrut::rutting_table3(mat, 2e-3 * ss.sphere_radius, num.shift);  // refuses what 3D cannot run, before any output
   const std::vector<std::uint64_t> seeds =
       o.seeds_text.empty() ? std::vector<std::uint64_t>{ss.seed} : cli::parse_seed_list(o.seeds_text);

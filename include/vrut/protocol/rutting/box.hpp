@@ -81,6 +81,21 @@ inline double least_patch_depth_mm(double wheel_width_mm, double radius_mm) {
   return std::ceil(2.0 * wheel_width_mm / cell - 1e-9) * cell;
 }
 
+// Refuses a box too shallow for a patch plate: the mix must flow out past
+// the wheel's edges. depth_mm is the specimen's depth (whole FCC cells);
+// lead names what asked for the patch ("--plate patch" from the CLI).
+inline void check_patch_depth(const char* lead, double depth_mm, double wheel_width_mm, double radius_mm) {
+  const double least_depth = 2.0 * wheel_width_mm;
+  if (depth_mm >= least_depth * (1.0 - 1e-9)) return;
+  char text[320];
+  std::snprintf(text, sizeof text, "%s needs a box at least %g mm deep (twice as deep as the wheel's %g mm width), "
+                "so the mix can flow out past the wheel's edges: this one is %.2f mm (whole FCC cells of %.3f mm); "
+                "give --depth-mm %.2f",
+                lead, least_depth, wheel_width_mm, depth_mm, fcc_cell(radius_mm),
+                least_patch_depth_mm(wheel_width_mm, radius_mm));
+  throw std::invalid_argument(text);
+}
+
 // Each stone that holds a sphere is one body, numbered in the stones'
 // order; mastic spheres are free (-1).
 inline std::vector<int> stone_bodies3(const Specimen3& sp) {
@@ -161,14 +176,7 @@ struct BoxSetup {
         throw std::invalid_argument("a 3D ensemble's specimens must share one box and one sphere size");
     }
     width = first.width * 1e-3, height = first.height * 1e-3, depth = first.depth * 1e-3;
-    if (wt.patch && depth < 2.0 * wt.wheel_width * (1.0 - 1e-9)) {
-      char text[260];
-      std::snprintf(text, sizeof text, "a patch plate (the wheel's %g mm width) needs a box at least twice as deep: "
-                    "this one is %.2f mm (whole FCC cells of %.3f mm); give --depth-mm %.2f",
-                    wt.wheel_width * 1e3, first.depth, fcc_cell(first.spheres.radius),
-                    least_patch_depth_mm(wt.wheel_width * 1e3, first.spheres.radius));
-      throw std::invalid_argument(text);
-    }
+    if (wt.patch) check_patch_depth("a patch plate", first.depth, wt.wheel_width * 1e3, first.spheres.radius);
     const double r = first.spheres.radius * 1e-3;
     d = 2.0 * r;
     endless = 50.0 * depth;
