@@ -1,7 +1,8 @@
 // vrut-pool: the statistics of one mix's specimens run as several ensembles
-// of vrut-rutting (seeds 1-3 one day, 4-5 the next), from their seeds.csv
-// files: what one ensemble of them all reports, as far as the specimens'
-// rows carry it. The rut depth's mean, 95 % interval (Student t) and sd; the
+// or single specimens of vrut-rutting (seeds 1-3 one day, 4 and 5 the next),
+// from their folders (an ensemble's seeds.csv, a single run's summary.json):
+// what one ensemble of them all reports, as far as the specimens' rows carry
+// it. The rut depth's mean, 95 % interval (Student t) and sd; the
 // DS's mean, its geometric mean with that one's interval (Student t in the
 // logarithms, so it stays positive, as vrut-rutting prints it), and median;
 // the DS as the standard reports it: the median (Kaplan-Meier over the
@@ -10,60 +11,40 @@
 // the curves: whether the mean curve scatters more over the window than it
 // deforms, where an ensemble would call its DS a lower bound.
 //
-//   vrut-pool out/a/seeds.csv out/b/seeds.csv ...
+//   vrut-pool out/a out/b/seeds.csv out/c/summary.json ...
 //   vrut-pool --cells ...   # "mean (low to high) | DS median | mean", for benchmarks/gradation_study.sh
 //
-// Refused: a seed in two files, files whose columns differ (2D with 3D, or
-// runs of another version), a run stopped before its end, fewer than two
-// specimens. The runs' time steps may differ (each is the smallest its own
+// Refused (app/pooled_runs.hpp): a seed in two runs, seeds.csv files whose
+// columns differ (runs of another version), 2D with 3D, runs whose config.ini
+// differ in a setting other than the seeds, the output and the backend and
+// threads (another mix or model), a run stopped before its end, fewer than
+// two specimens. The runs' time steps may differ (each is the smallest its own
 // specimens need); docs/validation.md measured what that moves.
 #include <vrut/analysis/rutting_ensemble.hpp>
-#include <vrut/analysis/seeds_csv.hpp>
 #include <vrut/analysis/standard_ds.hpp>
 #include <vrut/analysis/statistics.hpp>
+#include <vrut/app/pooled_runs.hpp>
 #include <vrut/protocol/rutting/test.hpp>
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
-namespace {
-
-std::vector<vrut::SeedRow> pool(const std::vector<std::string>& files) {
-  std::vector<vrut::SeedRow> rows;
-  std::map<std::uint64_t, std::string> file_of_seed;
-  std::string header;
-  for (const auto& f : files) {
-    const vrut::SeedsTable table = vrut::read_finished_seeds_csv(f);
-    if (header.empty()) header = table.header;
-    if (table.header != header) throw std::runtime_error(f + ": its columns differ from those of " + files.front());
-    for (const auto& row : table.rows) {
-      const auto [at, fresh] = file_of_seed.emplace(row.seed, f);
-      if (!fresh) throw std::runtime_error("seed " + std::to_string(row.seed) + " is in " + at->second + " and in " + f);
-      rows.push_back(row);
-    }
-  }
-  if (rows.size() < 2) throw std::runtime_error("need at least 2 specimens, got " + std::to_string(rows.size()));
-  return rows;
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
-  CLI::App app{"Pools the seeds.csv of several vrut-rutting runs of one mix: the rut depth's and the DS's statistics "
-               "over all their specimens"};
+  CLI::App app{"Pools several vrut-rutting runs of one mix and one model, ensembles or single specimens: the rut "
+               "depth's and the DS's statistics over all their specimens"};
   std::vector<std::string> files;
   bool cells = false;
-  app.add_option("seeds_csv", files, "each run's seeds.csv")->required();
+  app.add_option("runs", files, "each run's folder, or its seeds.csv (an ensemble) or summary.json (a single run)")
+      ->required();
   app.add_flag("--cells", cells, "one line for benchmarks/gradation_study.sh: \"mean (low to high) | DS median | mean\"");
   CLI11_PARSE(app, argc, argv);
   try {
-    const std::vector<vrut::SeedRow> rows = pool(files);
+    const std::vector<vrut::SeedRow> rows = vrut::app::pool_runs(files);
     std::vector<double> rut, ds, window_mm;
     std::vector<std::pair<double, bool>> ds_bounds;
     std::vector<vrut::ReportedDS> reported;

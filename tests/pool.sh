@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# vrut-pool against statistics worked by hand, one run or several, and its
-# refusals; and, given vrut-rutting, on a small ensemble's seeds.csv against
-# the statistics that the ensemble printed itself (the writer's columns and
-# the reader's agree).  Usage: pool.sh VRUT_POOL [VRUT_RUTTING]
+# vrut-pool against statistics worked by hand, one run or several, ensembles
+# or single runs, and its refusals; and, given vrut-rutting, on a small
+# ensemble's seeds.csv against the statistics that the ensemble printed
+# itself (the writer's columns and the reader's agree), and with a single
+# run's summary.json.  Usage: pool.sh VRUT_POOL [VRUT_RUTTING]
 set -u
 exe=$1
 rutting=${2:-}
@@ -26,6 +27,26 @@ row() {
 { echo "${header/spheres/disks}"; row 4 14 1 600; } >"$work/other.csv"
 { echo "$header"; row 1 11 6.3 100; } >"$work/one.csv"
 { echo "seed,rut"; echo "1,2"; } >"$work/foreign.csv"
+# single DIR SEED RUT WINDOW DS [GRADATION [DIMENSION [STOPPED]]]: a single
+# run's folder (--seed), its summary.json as vrut-rutting writes it (2D where
+# DIMENSION is not 3, with no such key) and its config.ini.
+single() {
+  local dir=$work/$1 at45 dim="" standard='"dynamic_stability_standard": {"passes_per_mm": '$5', "censored": false}, '
+  at45=$(awk -v r="$3" -v w="$4" 'BEGIN { print r - w }')
+  [ "${7:-2}" = 3 ] && dim='"dimension": 3, '
+  [ "${8:-0}" = 1 ] && standard=""
+  mkdir -p "$dir"
+  echo "{$dim\"seed\": $2, \"rut_depth_mm\": $3, \"deformation_45min_mm\": $at45, \"deformation_60min_mm\": $3, $standard\"dynamic_stability_passes_per_mm\": $5, \"dynamic_stability_is_lower_bound\": false, \"interrupted\": $([ "${8:-0}" = 1 ] && echo true || echo false)}" >"$dir/summary.json"
+  printf '# a comment\ngradation=%s\nseed=%s\nout="%s"\nthreads=%s\n' "${6:-2}" "$2" "$dir" "$2" >"$dir/config.ini"
+}
+single s1 1 11 6.3 100
+single s2 2 12 3.15 200
+single s3 3 13 1.05 600
+single s2-mix3 2 12 3.15 200 3
+single s2-3d 2 12 3.15 200 2 3  # 3D, as the hand-made seeds.csv (spheres)
+single s4-stopped 4 14 1 600 2 2 1
+mkdir -p "$work/ensemble13" && cp "$work/a.csv" "$work/ensemble13/seeds.csv"
+echo '{"seed": 1, "ensemble": {}}' >"$work/ensemble13/summary.json"
 
 # Ruts 11, 12, 13 mm: mean 12, sd 1, half width t(0.975, 2) / sqrt(3) =
 # 4.303 / 1.732 = 2.484. DS 100, 200, 600: mean 300 (its Student-t interval,
@@ -60,6 +81,10 @@ check "one run" "$want" "$work/all.csv"
 check "two runs, seeds in any order, the same statistics" "${want/seeds 1 2 3/seeds 1 3 2}" "$work/a.csv" "$work/b.csv"
 check "a DS that is only a lower bound" "$want_bound" "$work/bound.csv"
 check "cells for gradation_study.sh" "12.00 (9.52 to 14.48) | 200 | 12.0000" --cells "$work/all.csv"
+# Single runs (their folders or summary.json) pool as the rows of one
+# seeds.csv; their config.ini differ only in the seed, the output, the threads.
+check "three single runs" "$want" "$work/s1" "$work/s2/summary.json" "$work/s3"
+check "an ensemble's folder and a single run's" "${want/seeds 1 2 3/seeds 1 3 2}" "$work/ensemble13" "$work/s2-3d"
 refused() {  # refused NAME PATTERN ARGS...
   local name=$1 pattern=$2; shift 2
   local out code; out=$("$exe" "$@" 2>&1); code=$?
@@ -72,6 +97,10 @@ refused "runs with other columns" "columns differ" "$work/a.csv" "$work/other.cs
 refused "one specimen" "need at least 2 specimens, got 1" "$work/one.csv"
 refused "no such file" "cannot read" "$work/none.csv"
 refused "not a seeds.csv" "has no column rut_depth_mm" "$work/foreign.csv"
+refused "a single run stopped before its end" "seed 4 was stopped before its end" "$work/s1" "$work/s4-stopped"
+refused "another mix" "other settings: gradation=3 against gradation=2" "$work/s1" "$work/s2-mix3"
+refused "2D with 3D" "s2-3d/summary.json is a 3D run and .*s1/summary.json a 2D one" "$work/s1" "$work/s2-3d"
+refused "an ensemble's summary.json" "is an ensemble's summary: give its seeds.csv" "$work/ensemble13/summary.json" "$work/s2"
 if [ -n "$rutting" ]; then
   printed=$("$rutting" --width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300 --seeds 1-2 \
     --out "$work/ensemble" 2>&1 | grep "2 specimens: rut depth")
@@ -88,6 +117,23 @@ if [ -n "$rutting" ]; then
     echo "ok:   an ensemble's seeds.csv pools to the statistics it printed"
   else
     echo "FAIL: pooled a vrut-rutting ensemble; it printed:"; echo "$printed"; echo "pooled:"; echo "$pooled"
+    failures=$((failures + 1))
+  fi
+  # A single run (--seed 3) pooled with the ensemble: the mean of the
+  # ensemble's two ruts (seeds.csv) and the one the single run printed (to
+  # 0.01 mm, so 0.0017 in the mean), against vrut-pool's mean (to 0.01 mm):
+  # within 0.007 mm when summary.json carries the run's rut.
+  single_rut=$("$rutting" --width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300 --seed 3 \
+    --out "$work/single3" 2>&1 | sed -nE 's/.*: rut depth ([0-9.]+) mm at 60 min.*/\1/p')
+  two=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "rut_depth_mm") c = i } NR > 1 { s += $c } END { print s }' \
+    "$work/ensemble/seeds.csv")
+  pooled3=$("$exe" "$work/ensemble" "$work/single3" 2>&1)
+  mean3=$(sed -nE 's/^rut depth, mm: ([0-9.]+) .*/\1/p' <<<"$pooled3")
+  if [ -n "$single_rut" ] && grep -qF "specimens: 3 (seeds 1 2 3)" <<<"$pooled3" &&
+     awk -v a="$mean3" -v t="$two" -v r="$single_rut" 'BEGIN { d = a - (t + r) / 3; exit !(d < 0.007 && d > -0.007) }'; then
+    echo "ok:   a single run's summary.json pools with an ensemble's seeds.csv"
+  else
+    echo "FAIL: pooled the ensemble with a single run (rut $single_rut, the ensemble's sum $two):"; echo "$pooled3"
     failures=$((failures + 1))
   fi
 fi

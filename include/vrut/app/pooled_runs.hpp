@@ -1,0 +1,148 @@
+#pragma once
+// The specimens of several vrut-rutting runs of one mix, for vrut-pool: each
+// run given as its folder, its seeds.csv (an ensemble) or its summary.json (a
+// single specimen, --seed). Runs of one mix and one model only: refused are
+// runs whose config.ini files (beside their results) differ in a setting of
+// the specimen, the model or the test, 2D pooled with 3D, a seed counted
+// twice, a run stopped before its end, and fewer than two specimens.
+// Host-only.
+#include <vrut/analysis/seeds_csv.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vrut::app {
+
+// One run's specimens and what it was run with.
+struct PooledRun {
+  std::string path;    // the file read
+  std::string header;  // seeds.csv's first line; empty for a single run
+  int dimension = 2;
+  std::map<std::string, std::string> settings;  // config.ini's key=value lines; empty where there is none
+  std::vector<SeedRow> rows;
+};
+
+// The settings that may differ between runs of one mix and one model: which
+// specimens, where the results go, and how the run was computed (Serial and
+// OpenMP agree bit for bit).
+inline bool setting_of_the_run_only(const std::string& key) {
+  static const std::set<std::string> keys{"seed",    "seeds",   "image", "out", "force", "threads",
+                                          "backend", "checkpoint-every"};
+  return keys.count(key) > 0;
+}
+
+// config.ini's settings, as vrut-rutting writes it: "key=value" lines,
+// comments after '#'. None where the file is not there.
+inline std::map<std::string, std::string> read_config_ini(const std::filesystem::path& file) {
+  std::map<std::string, std::string> settings;
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#' || line[0] == '[') continue;
+    const auto eq = line.find('=');
+    if (eq != std::string::npos) settings[line.substr(0, eq)] = line.substr(eq + 1);
+  }
+  return settings;
+}
+
+// A single run's summary.json as a seeds.csv row: its one specimen.
+inline SeedRow single_run_row(const nlohmann::json& j, const std::string& path) {
+  if (j.contains("ensemble"))
+    throw std::runtime_error(path + " is an ensemble's summary: give its seeds.csv (or its folder)");
+  if (!j.contains("rut_depth_mm") || !j.contains("seed"))
+    throw std::runtime_error(path + " has no rut_depth_mm or seed: is it a vrut-rutting summary.json?");
+  SeedRow row;
+  row.seed = j.at("seed").get<std::uint64_t>();
+  row.rut_depth_mm = j.at("rut_depth_mm").get<double>();
+  row.deformation_45min_mm = j.at("deformation_45min_mm").get<double>();
+  row.deformation_60min_mm = j.at("deformation_60min_mm").get<double>();
+  row.dynamic_stability = j.at("dynamic_stability_passes_per_mm").get<double>();
+  row.dynamic_stability_is_lower_bound = j.at("dynamic_stability_is_lower_bound").get<bool>();
+  row.stopped = j.value("interrupted", false) || !j.contains("dynamic_stability_standard");
+  if (!row.stopped) {
+    row.standard.value = j.at("dynamic_stability_standard").at("passes_per_mm").get<double>();
+    row.standard.censored = j.at("dynamic_stability_standard").at("censored").get<bool>();
+  }
+  return row;
+}
+
+// One run: a folder (its seeds.csv where it has one, else its summary.json),
+// a seeds.csv, or a single run's summary.json.
+inline PooledRun read_pooled_run(const std::string& given) {
+  namespace fs = std::filesystem;
+  fs::path file = given;
+  if (fs::is_directory(file)) file = fs::exists(file / "seeds.csv") ? file / "seeds.csv" : file / "summary.json";
+  PooledRun run;
+  run.path = file.string();
+  run.settings = read_config_ini(file.parent_path() / "config.ini");
+  if (file.extension() == ".json") {
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error("cannot read " + run.path);
+    nlohmann::json j;
+    try {
+      in >> j;
+    } catch (const nlohmann::json::exception&) {
+      throw std::runtime_error(run.path + " is not JSON");
+    }
+    try {
+      run.rows.push_back(single_run_row(j, run.path));
+    } catch (const nlohmann::json::exception& e) {
+      throw std::runtime_error(run.path + ": " + e.what());
+    }
+    run.dimension = j.value("dimension", 2);
+  } else {
+    const SeedsTable table = read_seeds_csv(run.path);
+    run.header = table.header;
+    run.rows = table.rows;
+    run.dimension = table.header.find(",spheres,") != std::string::npos ? 3 : 2;
+  }
+  for (const auto& row : run.rows)
+    if (row.stopped)
+      throw std::runtime_error(run.path + ": seed " + std::to_string(row.seed) +
+                               " was stopped before its end (no DS): resume it first");
+  return run;
+}
+
+// The specimens of all the runs, in the order given; throws
+// std::runtime_error saying what keeps them apart.
+inline std::vector<SeedRow> pool_runs(const std::vector<std::string>& given) {
+  std::vector<PooledRun> runs;
+  for (const auto& g : given) runs.push_back(read_pooled_run(g));
+  std::vector<SeedRow> rows;
+  std::map<std::uint64_t, std::string> file_of_seed;
+  for (const auto& run : runs) {
+    for (const auto& other : runs) {
+      if (&other == &run) break;  // each pair once, against the runs before
+      if (!run.header.empty() && !other.header.empty() && run.header != other.header)
+        throw std::runtime_error(run.path + ": its columns differ from those of " + other.path);
+      if (run.dimension != other.dimension)
+        throw std::runtime_error(run.path + " is a " + std::to_string(run.dimension) + "D run and " + other.path +
+                                 " a " + std::to_string(other.dimension) + "D one");
+      for (const auto& [key, value] : run.settings) {
+        const auto there = other.settings.find(key);
+        if (there != other.settings.end() && there->second != value && !setting_of_the_run_only(key))
+          throw std::runtime_error(run.path + " and " + other.path + " were run with other settings: " + key + "=" +
+                                   value + " against " + key + "=" + there->second +
+                                   " (their config.ini): pool one mix's runs of one model");
+      }
+    }
+    for (const auto& row : run.rows) {
+      const auto [at, fresh] = file_of_seed.emplace(row.seed, run.path);
+      if (!fresh)
+        throw std::runtime_error("seed " + std::to_string(row.seed) + " is in " + at->second + " and in " + run.path);
+      rows.push_back(row);
+    }
+  }
+  if (rows.size() < 2) throw std::runtime_error("need at least 2 specimens, got " + std::to_string(rows.size()));
+  return rows;
+}
+
+}  // namespace vrut::app
