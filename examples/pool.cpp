@@ -16,9 +16,10 @@
 //
 // Refused (app/pooled_runs.hpp): a seed in two runs, seeds.csv files whose
 // columns differ (runs of another version), 2D with 3D, runs whose config.ini
-// differ in a setting other than the seeds, the output and the backend and
-// threads (another mix or model), a run stopped before its end, fewer than
-// two specimens. The runs' time steps may differ (each is the smallest its own
+// differ in a setting other than the seeds, the output, --force, the
+// checkpoints, the backend and threads (another mix or model), a run from
+// images with any other, a run stopped before its end, fewer than two
+// specimens. The runs' time steps may differ (each is the smallest its own
 // specimens need); docs/validation.md measured what that moves.
 #include <vrut/analysis/rutting_ensemble.hpp>
 #include <vrut/analysis/standard_ds.hpp>

@@ -29,14 +29,15 @@ row() {
 { echo "seed,rut"; echo "1,2"; } >"$work/foreign.csv"
 # single DIR SEED RUT WINDOW DS [GRADATION [DIMENSION [STOPPED]]]: a single
 # run's folder (--seed), its summary.json as vrut-rutting writes it (2D where
-# DIMENSION is not 3, with no such key) and its config.ini.
+# DIMENSION is not 3, with no such key; a run stopped before its end has its
+# DS null and no standard's DS) and its config.ini.
 single() {
-  local dir=$work/$1 at45 dim="" standard='"dynamic_stability_standard": {"passes_per_mm": '$5', "censored": false}, '
+  local dir=$work/$1 at45 dim="" ds=$5 interrupted=false standard='"dynamic_stability_standard": {"passes_per_mm": '$5', "censored": false}, '
   at45=$(awk -v r="$3" -v w="$4" 'BEGIN { print r - w }')
   [ "${7:-2}" = 3 ] && dim='"dimension": 3, '
-  [ "${8:-0}" = 1 ] && standard=""
+  [ "${8:-0}" = 1 ] && { standard=""; ds=null; interrupted=true; }
   mkdir -p "$dir"
-  echo "{$dim\"seed\": $2, \"rut_depth_mm\": $3, \"deformation_45min_mm\": $at45, \"deformation_60min_mm\": $3, $standard\"dynamic_stability_passes_per_mm\": $5, \"dynamic_stability_is_lower_bound\": false, \"interrupted\": $([ "${8:-0}" = 1 ] && echo true || echo false)}" >"$dir/summary.json"
+  echo "{$dim\"seed\": $2, \"rut_depth_mm\": $3, \"deformation_45min_mm\": $at45, \"deformation_60min_mm\": $3, $standard\"dynamic_stability_passes_per_mm\": $ds, \"dynamic_stability_is_lower_bound\": false, \"interrupted\": $interrupted}" >"$dir/summary.json"
   printf '# a comment\ngradation=%s\nseed=%s\nout="%s"\nthreads=%s\n' "${6:-2}" "$2" "$dir" "$2" >"$dir/config.ini"
 }
 single s1 1 11 6.3 100
@@ -45,6 +46,16 @@ single s3 3 13 1.05 600
 single s2-mix3 2 12 3.15 200 3
 single s2-3d 2 12 3.15 200 2 3  # 3D, as the hand-made seeds.csv (spheres)
 single s4-stopped 4 14 1 600 2 2 1
+single s2-f1 2 12 3.15 200
+# Settings of the run only (the backend, checkpoints) may differ, a number
+# be typed either way (0.35, .35), and a setting be missing (s3: a run of a
+# version before the option); the stones' friction of the model may not.
+printf 'backend="openmp"\ncheckpoint-every=0\nstone-friction=0.35\nshift=10000\n' >>"$work/s1/config.ini"
+printf 'backend="serial"\ncheckpoint-every=600\nstone-friction=.35\nshift=1e4\n' >>"$work/s2/config.ini"
+printf 'backend="serial"\nstone-friction=1\nshift=1e5\n' >>"$work/s2-f1/config.ini"
+single img1 1 11 6.3 100
+sed -i 's/^{/{"images": ["a.png"], /' "$work/img1/summary.json"
+mkdir -p "$work/empty"
 mkdir -p "$work/ensemble13" && cp "$work/a.csv" "$work/ensemble13/seeds.csv"
 echo '{"seed": 1, "ensemble": {}}' >"$work/ensemble13/summary.json"
 
@@ -82,7 +93,7 @@ check "two runs, seeds in any order, the same statistics" "${want/seeds 1 2 3/se
 check "a DS that is only a lower bound" "$want_bound" "$work/bound.csv"
 check "cells for gradation_study.sh" "12.00 (9.52 to 14.48) | 200 | 12.0000" --cells "$work/all.csv"
 # Single runs (their folders or summary.json) pool as the rows of one
-# seeds.csv; their config.ini differ only in the seed, the output, the threads.
+# seeds.csv; their config.ini differ only in what the run's settings allow.
 check "three single runs" "$want" "$work/s1" "$work/s2/summary.json" "$work/s3"
 check "an ensemble's folder and a single run's" "${want/seeds 1 2 3/seeds 1 3 2}" "$work/ensemble13" "$work/s2-3d"
 refused() {  # refused NAME PATTERN ARGS...
@@ -98,7 +109,10 @@ refused "one specimen" "need at least 2 specimens, got 1" "$work/one.csv"
 refused "no such file" "cannot read" "$work/none.csv"
 refused "not a seeds.csv" "has no column rut_depth_mm" "$work/foreign.csv"
 refused "a single run stopped before its end" "seed 4 was stopped before its end" "$work/s1" "$work/s4-stopped"
-refused "another mix" "other settings: gradation=3 against gradation=2" "$work/s1" "$work/s2-mix3"
+refused "another model" "other settings (their config.ini): shift=1e5 against shift=10000, stone-friction=1 against stone-friction=0.35: pool one mix's runs of one model" "$work/s1" "$work/s2-f1"
+refused "a run from images with another" "img1/summary.json was run from images" "$work/img1" "$work/s2"
+refused "a folder with no results" "empty has no seeds.csv or summary.json: is its run still going" "$work/s1" "$work/empty"
+refused "another mix" "other settings (their config.ini): gradation=3 against gradation=2:" "$work/s1" "$work/s2-mix3"
 refused "2D with 3D" "s2-3d/summary.json is a 3D run and .*s1/summary.json a 2D one" "$work/s1" "$work/s2-3d"
 refused "an ensemble's summary.json" "is an ensemble's summary: give its seeds.csv" "$work/ensemble13/summary.json" "$work/s2"
 if [ -n "$rutting" ]; then

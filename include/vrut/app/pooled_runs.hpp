@@ -3,14 +3,17 @@
 // run given as its folder, its seeds.csv (an ensemble) or its summary.json (a
 // single specimen, --seed). Runs of one mix and one model only: refused are
 // runs whose config.ini files (beside their results) differ in a setting of
-// the specimen, the model or the test, 2D pooled with 3D, a seed counted
-// twice, a run stopped before its end, and fewer than two specimens.
+// the specimen, the model or the test, 2D pooled with 3D, a run made from
+// images with any other (each numbers its images from 1), a seed counted twice, a run
+// stopped before its end, and fewer than two specimens. A setting that one
+// run's config.ini lacks (an option newer than that run) is not compared.
 // Host-only.
 #include <vrut/analysis/seeds_csv.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -26,6 +29,7 @@ struct PooledRun {
   std::string path;    // the file read
   std::string header;  // seeds.csv's first line; empty for a single run
   int dimension = 2;
+  bool from_images = false;
   std::map<std::string, std::string> settings;  // config.ini's key=value lines; empty where there is none
   std::vector<SeedRow> rows;
 };
@@ -34,9 +38,17 @@ struct PooledRun {
 // specimens, where the results go, and how the run was computed (Serial and
 // OpenMP agree bit for bit).
 inline bool setting_of_the_run_only(const std::string& key) {
-  static const std::set<std::string> keys{"seed",    "seeds",   "image", "out", "force", "threads",
-                                          "backend", "checkpoint-every"};
+  static const std::set<std::string> keys{"seed", "seeds", "out", "force", "threads", "backend", "checkpoint-every"};
   return keys.count(key) > 0;
+}
+
+// Two config.ini values of one setting agree: the same text, or the same
+// number however it was typed (0.35 and .35, 1e4 and 10000).
+inline bool same_setting(const std::string& a, const std::string& b) {
+  if (a == b) return true;
+  char *end_a = nullptr, *end_b = nullptr;
+  const double x = std::strtod(a.c_str(), &end_a), y = std::strtod(b.c_str(), &end_b);
+  return !a.empty() && !b.empty() && *end_a == '\0' && *end_b == '\0' && x == y;
 }
 
 // config.ini's settings, as vrut-rutting writes it: "key=value" lines,
@@ -61,16 +73,16 @@ inline SeedRow single_run_row(const nlohmann::json& j, const std::string& path) 
     throw std::runtime_error(path + " has no rut_depth_mm or seed: is it a vrut-rutting summary.json?");
   SeedRow row;
   row.seed = j.at("seed").get<std::uint64_t>();
+  // A run stopped before its end wrote no DS (null where it is not a number).
+  row.stopped = j.value("interrupted", false) || !j.contains("dynamic_stability_standard");
+  if (row.stopped) return row;
   row.rut_depth_mm = j.at("rut_depth_mm").get<double>();
   row.deformation_45min_mm = j.at("deformation_45min_mm").get<double>();
   row.deformation_60min_mm = j.at("deformation_60min_mm").get<double>();
   row.dynamic_stability = j.at("dynamic_stability_passes_per_mm").get<double>();
   row.dynamic_stability_is_lower_bound = j.at("dynamic_stability_is_lower_bound").get<bool>();
-  row.stopped = j.value("interrupted", false) || !j.contains("dynamic_stability_standard");
-  if (!row.stopped) {
-    row.standard.value = j.at("dynamic_stability_standard").at("passes_per_mm").get<double>();
-    row.standard.censored = j.at("dynamic_stability_standard").at("censored").get<bool>();
-  }
+  row.standard.value = j.at("dynamic_stability_standard").at("passes_per_mm").get<double>();
+  row.standard.censored = j.at("dynamic_stability_standard").at("censored").get<bool>();
   return row;
 }
 
@@ -79,7 +91,14 @@ inline SeedRow single_run_row(const nlohmann::json& j, const std::string& path) 
 inline PooledRun read_pooled_run(const std::string& given) {
   namespace fs = std::filesystem;
   fs::path file = given;
-  if (fs::is_directory(file)) file = fs::exists(file / "seeds.csv") ? file / "seeds.csv" : file / "summary.json";
+  if (fs::is_directory(file)) {
+    if (fs::exists(file / "seeds.csv"))
+      file /= "seeds.csv";
+    else if (fs::exists(file / "summary.json"))
+      file /= "summary.json";
+    else
+      throw std::runtime_error(given + " has no seeds.csv or summary.json: is its run still going, or did it fail?");
+  }
   PooledRun run;
   run.path = file.string();
   run.settings = read_config_ini(file.parent_path() / "config.ini");
@@ -98,12 +117,16 @@ inline PooledRun read_pooled_run(const std::string& given) {
       throw std::runtime_error(run.path + ": " + e.what());
     }
     run.dimension = j.value("dimension", 2);
+    run.from_images = j.contains("images");
   } else {
     const SeedsTable table = read_seeds_csv(run.path);
     run.header = table.header;
     run.rows = table.rows;
     run.dimension = table.header.find(",spheres,") != std::string::npos ? 3 : 2;
+    run.from_images = table.header.size() >= 6 && table.header.compare(table.header.size() - 6, 6, ",image") == 0;
   }
+  const auto image = run.settings.find("image");
+  if (image != run.settings.end() && image->second != "\"\"" && !image->second.empty()) run.from_images = true;
   for (const auto& row : run.rows)
     if (row.stopped)
       throw std::runtime_error(run.path + ": seed " + std::to_string(row.seed) +
@@ -116,6 +139,10 @@ inline PooledRun read_pooled_run(const std::string& given) {
 inline std::vector<SeedRow> pool_runs(const std::vector<std::string>& given) {
   std::vector<PooledRun> runs;
   for (const auto& g : given) runs.push_back(read_pooled_run(g));
+  for (const auto& run : runs)
+    if (run.from_images && runs.size() > 1)
+      throw std::runtime_error(run.path + " was run from images, which cannot be pooled with other runs (each run "
+                               "numbers its images from 1): run the images as one ensemble, --image a --image b ...");
   std::vector<SeedRow> rows;
   std::map<std::uint64_t, std::string> file_of_seed;
   for (const auto& run : runs) {
@@ -126,13 +153,15 @@ inline std::vector<SeedRow> pool_runs(const std::vector<std::string>& given) {
       if (run.dimension != other.dimension)
         throw std::runtime_error(run.path + " is a " + std::to_string(run.dimension) + "D run and " + other.path +
                                  " a " + std::to_string(other.dimension) + "D one");
+      std::string differences;
       for (const auto& [key, value] : run.settings) {
         const auto there = other.settings.find(key);
-        if (there != other.settings.end() && there->second != value && !setting_of_the_run_only(key))
-          throw std::runtime_error(run.path + " and " + other.path + " were run with other settings: " + key + "=" +
-                                   value + " against " + key + "=" + there->second +
-                                   " (their config.ini): pool one mix's runs of one model");
+        if (there != other.settings.end() && !same_setting(there->second, value) && !setting_of_the_run_only(key))
+          differences += (differences.empty() ? "" : ", ") + key + "=" + value + " against " + key + "=" + there->second;
       }
+      if (!differences.empty())
+        throw std::runtime_error(run.path + " and " + other.path + " were run with other settings (their config.ini): " +
+                                 differences + ": pool one mix's runs of one model");
     }
     for (const auto& row : run.rows) {
       const auto [at, fresh] = file_of_seed.emplace(row.seed, run.path);
