@@ -102,6 +102,15 @@ refused() {  # refused NAME PATTERN ARGS...
   if [ "$code" -ne 0 ] && grep -q -- "$pattern" <<<"$out"; then echo "ok:   refused: $name"
   else echo "FAIL: $name -> exit $code, output:"; echo "$out"; failures=$((failures + 1)); fi
 }
+# A finished single run whose DS window did not deform: its DS infinite, which
+# summary.json writes null, a lower bound; pooled, not refused.
+single s2-flat 2 12 0 200
+sed -i 's/"dynamic_stability_passes_per_mm": 200, "dynamic_stability_is_lower_bound": false/"dynamic_stability_passes_per_mm": null, "dynamic_stability_is_lower_bound": true/' "$work/s2-flat/summary.json"
+if "$exe" "$work/s1" "$work/s2-flat" "$work/s3" 2>&1 | grep -qF "(interval not known: 1 of 3 are lower bounds)"; then
+  echo "ok:   a single run's infinite DS (null in summary.json) pools as a lower bound"
+else
+  echo "FAIL: a single run's infinite DS:"; "$exe" "$work/s1" "$work/s2-flat" "$work/s3"; failures=$((failures + 1))
+fi
 refused "a seed in two runs" "seed 3 is in .*all.csv and in .*again.csv" "$work/all.csv" "$work/again.csv"
 refused "a run stopped before its end" "seed 4 was stopped before its end" "$work/a.csv" "$work/stopped.csv"
 refused "runs with other columns" "columns differ" "$work/a.csv" "$work/other.csv"

@@ -4,9 +4,10 @@
 // single specimen, --seed). Runs of one mix and one model only: refused are
 // runs whose config.ini files (beside their results) differ in a setting of
 // the specimen, the model or the test, 2D pooled with 3D, a run made from
-// images with any other (each numbers its images from 1), a seed counted twice, a run
-// stopped before its end, and fewer than two specimens. A setting that one
-// run's config.ini lacks (an option newer than that run) is not compared.
+// images with any other (each numbers its images from 1), a seed counted
+// twice, a run stopped before its end, and fewer than two specimens. A
+// setting that one run's config.ini lacks (an option newer than that run)
+// is not compared.
 // Host-only.
 #include <vrut/analysis/seeds_csv.hpp>
 
@@ -16,6 +17,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -51,8 +53,8 @@ inline bool same_setting(const std::string& a, const std::string& b) {
   return !a.empty() && !b.empty() && *end_a == '\0' && *end_b == '\0' && x == y;
 }
 
-// config.ini's settings, as vrut-rutting writes it: "key=value" lines,
-// comments after '#'. None where the file is not there.
+// config.ini's settings, as vrut-rutting writes it: "key=value" lines and
+// comment lines that start with '#'. None where the file is not there.
 inline std::map<std::string, std::string> read_config_ini(const std::filesystem::path& file) {
   std::map<std::string, std::string> settings;
   std::ifstream in(file);
@@ -79,7 +81,9 @@ inline SeedRow single_run_row(const nlohmann::json& j, const std::string& path) 
   row.rut_depth_mm = j.at("rut_depth_mm").get<double>();
   row.deformation_45min_mm = j.at("deformation_45min_mm").get<double>();
   row.deformation_60min_mm = j.at("deformation_60min_mm").get<double>();
-  row.dynamic_stability = j.at("dynamic_stability_passes_per_mm").get<double>();
+  // JSON has no infinity: a DS whose window did not deform is written null.
+  const nlohmann::json& ds = j.at("dynamic_stability_passes_per_mm");
+  row.dynamic_stability = ds.is_null() ? std::numeric_limits<double>::infinity() : ds.get<double>();
   row.dynamic_stability_is_lower_bound = j.at("dynamic_stability_is_lower_bound").get<bool>();
   row.standard.value = j.at("dynamic_stability_standard").at("passes_per_mm").get<double>();
   row.standard.censored = j.at("dynamic_stability_standard").at("censored").get<bool>();
