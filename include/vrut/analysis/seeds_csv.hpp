@@ -91,14 +91,19 @@ inline SeedsTable read_seeds_csv(const std::string& path) {
   return table;
 }
 
-// read_seeds_csv, refusing a run stopped before its end: its specimens have
-// no DS to pool or resample.
-inline SeedsTable read_finished_seeds_csv(const std::string& path) {
-  SeedsTable table = read_seeds_csv(path);
-  for (const auto& row : table.rows)
+// Throws std::runtime_error naming the file and the seed where a row was
+// stopped before its end: its specimen has no DS to pool or resample.
+inline void refuse_stopped(const std::vector<SeedRow>& rows, const std::string& path) {
+  for (const auto& row : rows)
     if (row.stopped)
       throw std::runtime_error(path + ": seed " + std::to_string(row.seed) +
                                " was stopped before its end (no DS): resume it first");
+}
+
+// read_seeds_csv, refusing a run stopped before its end.
+inline SeedsTable read_finished_seeds_csv(const std::string& path) {
+  SeedsTable table = read_seeds_csv(path);
+  refuse_stopped(table.rows, path);
   return table;
 }
 

@@ -131,10 +131,7 @@ inline PooledRun read_pooled_run(const std::string& given) {
   }
   const auto image = run.settings.find("image");
   if (image != run.settings.end() && image->second != "\"\"" && !image->second.empty()) run.from_images = true;
-  for (const auto& row : run.rows)
-    if (row.stopped)
-      throw std::runtime_error(run.path + ": seed " + std::to_string(row.seed) +
-                               " was stopped before its end (no DS): resume it first");
+  refuse_stopped(run.rows, run.path);
   return run;
 }
 
