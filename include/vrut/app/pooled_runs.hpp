@@ -95,6 +95,7 @@ inline SeedRow single_run_row(const nlohmann::json& j, const std::string& path) 
 inline PooledRun read_pooled_run(const std::string& given) {
   namespace fs = std::filesystem;
   fs::path file = given;
+  if (!fs::exists(file)) throw std::runtime_error(given + ": no such file or folder");
   if (fs::is_directory(file)) {
     if (fs::exists(file / "seeds.csv"))
       file /= "seeds.csv";
