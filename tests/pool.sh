@@ -117,6 +117,9 @@ refused "runs with other columns" "columns differ" "$work/a.csv" "$work/other.cs
 refused "one specimen" "need at least 2 specimens, got 1" "$work/one.csv"
 refused "no such file" "none.csv: no such file or folder" "$work/none.csv"
 refused "no such folder" "f060-s5: no such file or folder" "$work/s1" "$work/f060-s5"
+mkdir -p "$work/.f060-s6.partial"  # a run still going: vrut-rutting stages its folder beside it until the end
+refused "a run still going" "f060-s6 does not exist yet: its run is still going, or was killed (.f060-s6.partial holds it" "$work/s1" "$work/f060-s6"
+refused "a run still going, named with a slash" "f060-s6/ does not exist yet" "$work/s1" "$work/f060-s6/"
 refused "not a seeds.csv" "has no column rut_depth_mm" "$work/foreign.csv"
 refused "a single run stopped before its end" "seed 4 was stopped before its end" "$work/s1" "$work/s4-stopped"
 refused "another model" "other settings (their config.ini): shift=1e5 against shift=10000, stone-friction=1 against stone-friction=0.35: pool one mix's runs of one model" "$work/s1" "$work/s2-f1"

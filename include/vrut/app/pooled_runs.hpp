@@ -95,7 +95,15 @@ inline SeedRow single_run_row(const nlohmann::json& j, const std::string& path) 
 inline PooledRun read_pooled_run(const std::string& given) {
   namespace fs = std::filesystem;
   fs::path file = given;
-  if (!fs::exists(file)) throw std::runtime_error(given + ": no such file or folder");
+  if (!fs::exists(file)) {
+    // vrut-rutting writes its folder whole when the run ends, staged until then beside it (io/output_dir.hpp).
+    const fs::path named = file.filename().empty() ? file.parent_path() : file;  // "run/" as "run"
+    const fs::path staged = fs::absolute(named).parent_path() / ("." + named.filename().string() + ".partial");
+    if (!named.filename().empty() && fs::is_directory(staged))
+      throw std::runtime_error(given + " does not exist yet: its run is still going, or was killed (" +
+                               staged.filename().string() + " holds it until the run ends)");
+    throw std::runtime_error(given + ": no such file or folder");
+  }
   if (fs::is_directory(file)) {
     if (fs::exists(file / "seeds.csv"))
       file /= "seeds.csv";
