@@ -218,6 +218,7 @@ rutting)
   expect "2" "--section transverse is for 2D sections" -- "${small3[@]}" --section transverse --out bad3
   expect "2" "patch needs a box at least 100 mm deep.*give --depth-mm 101.82" -- "${small3[@]}" --plate patch --out bad3
   expect "1 2" "plate" -- "${small3[@]}" --plate disk --out bad3
+  expect "1 2" "is model, none or the filler's Rigden voids" -- "${small3[@]}" --mastic-by-filler 35 --out bad3
   [[ -e "$work/bad3" ]] && { echo "FAIL: output folder bad3 written after an error"; failures=$((failures + 1)); }
   # The runs that succeed, which the sanitizer build (VRUT_ERRORS_ONLY) leaves out: too slow there.
   if [[ -z ${VRUT_ERRORS_ONLY:-} ]]; then
@@ -241,6 +242,15 @@ rutting)
   grep -q '"stone_film": "per-contact"' "$work/run3d/summary.json" ||
     { echo "FAIL: the 3D summary does not say the stones meet through the film"; failures=$((failures + 1)); }
   expect "0" "3D: rut depth" -- "${small3[@]}" --stone-film none --out run3d_none
+  # The 3D model's defaults (docs/rutting.md, "In 3D"): the stones' friction
+  # 0.6 fitted on 2#, and the mastic stiffened by its filler at Rigden voids
+  # 0.35: 1# holds more filler than 2#, the mastic's mix, so a stiffer mastic.
+  for key in '"stone_friction": 0.6,' '"mastic_by_filler": "0.35",' '"calibrated": true,'; do
+    grep -qF "$key" "$work/run3d/summary.json" || { echo "FAIL: the 3D summary lacks $key"; failures=$((failures + 1)); }
+  done
+  if awk -F': ' '/"mastic_scale"/ { s = $2 + 0 } END { exit !(s > 1) }' "$work/run3d/summary.json"; then
+    echo "ok:   3D 1#'s mastic stiffened by its filler"
+  else echo "FAIL: 3D 1#'s mastic not stiffened by its filler"; failures=$((failures + 1)); fi
   expect "0" "rut depth" -- "${small[@]}" --out run1
   for f in summary.json deformation.csv deformation.png specimen.png rut_forming.png displacement.png final.vtk config.ini; do
     [[ -s "$work/run1/$f" ]] || { echo "FAIL: no $f"; failures=$((failures + 1)); }
@@ -248,6 +258,10 @@ rutting)
   for key in gradation seed disk_radius_mm shift_factor particles contacts steps wall_seconds backend threads \
              particle_steps_per_second deformation_45min_mm deformation_60min_mm rut_depth_mm dynamic_stability_passes_per_mm; do
     grep -q "\"$key\"" "$work/run1/summary.json" || { echo "FAIL: summary.json lacks $key"; failures=$((failures + 1)); }
+  done
+  # The 2D model keeps its own: the stones' friction the mastic's, one mastic for every mix.
+  for key in '"stone_friction": 1.0,' '"mastic_by_filler": "none",'; do
+    grep -qF "$key" "$work/run1/summary.json" || { echo "FAIL: the 2D summary lacks $key"; failures=$((failures + 1)); }
   done
   expect "1 2" "exists" -- "${small[@]}" --out run1
   # The config written is the config used: reading it back gives the same

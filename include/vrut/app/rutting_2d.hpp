@@ -56,6 +56,7 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   if (o.plate != RunOptions().plate)
     throw std::invalid_argument("--plate patch is for the 3D test (--dim 3): a 2D section's plate spans its "
                                 "thickness (see --section transverse)");
+  resolve_model_options(o);
   o.convert();
   const auto& so = o.so;
   const auto& wt = o.wt;
@@ -220,7 +221,8 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   j["stone_film"] = stone_film;
   j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
   j["least_film_um"] = mat.least_film * 1e6;  // a candidate (docs/validation.md); 0 in the model
-  j["mastic_by_filler"] = o.mastic_by_filler;  // a candidate (docs/validation.md); none in the model
+  j["stone_friction"] = mat.stone_friction;
+  j["mastic_by_filler"] = o.mastic_by_filler;  // a candidate in 2D (docs/validation.md); none in the model
   j["mastic_scale"] = o.mastic_scale;
   j["wall_seconds"] = wall_seconds;
   j["mpi_ranks"] = session.size();

@@ -94,6 +94,7 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
     throw std::invalid_argument("--mastic-aggregate-factor is the 2D model's (fitted on 2# with the films between "
                                 "stones); in 3D give --mastic-aggregate-factor-3d");
   o.mat.mastic_aggregate_factor = o.mastic_aggregate_factor_3d;
+  resolve_model_options(o);
   o.convert();
   const auto& wt = o.wt;
   const auto& mat = o.mat;
@@ -271,9 +272,12 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   j["stone_film"] = o.stone_film;
   j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
   j["least_film_um"] = mat.least_film * 1e6;  // a candidate (docs/validation.md); 0 in the model
-  j["mastic_by_filler"] = o.mastic_by_filler;  // a candidate (docs/validation.md); none in the model
+  j["stone_friction"] = mat.stone_friction;  // the 3D model's one constant, fitted on 2# (stone_friction_3d)
+  j["mastic_by_filler"] = o.mastic_by_filler;  // the filler's Rigden voids, 0.35 in the model (mastic_by_filler_3d)
   j["mastic_scale"] = o.mastic_scale;
-  j["calibrated"] = false;  // 3D fits no constant on 2# (docs/validation.md, "The factor at 1 mm")
+  // Whether this run is the 3D model fitted on 2# (docs/validation.md, "The
+  // frozen 3D model"): its friction and filler as the model has them.
+  j["calibrated"] = mat.stone_friction == stone_friction_3d && o.mastic_by_filler == mastic_by_filler_3d;
   j["wall_seconds"] = wall_seconds;
   j["backend"] = o.backend;
   j["threads"] = used_threads;

@@ -22,6 +22,16 @@
 
 namespace vrut::app {
 
+// The 3D model (vrut-rutting --dim 3) since 2026-12-06, where its options are
+// left at their defaults: the stones' friction 0.6, its one constant, fitted
+// on 2#'s eight specimens at 1 mm spheres, and each mix's mastic stiffened by
+// its filler at Rigden voids 0.35, on no fitted constant (docs/validation.md,
+// round four, "The frozen 3D model"). The 3D model before it: --stone-friction
+// 1 --mastic-by-filler none. 2D keeps its own: the stones' friction that of
+// the mastic (--friction) and one mastic for every mix.
+inline constexpr double stone_friction_3d = 0.6;
+inline constexpr const char* mastic_by_filler_3d = "0.35";
+
 // Every option of a run: parsed from the command line, or on --resume from
 // the arguments the checkpoint stored.
 struct RunOptions {
@@ -37,7 +47,7 @@ struct RunOptions {
   std::string section = "longitudinal";  // --section (wt.transverse)
   std::string plate = "strip";           // --plate (wt.patch)
   std::string least_film = "none";  // --least-film: none, binder or micrometres (least_film_m)
-  std::string mastic_by_filler = "none";  // --mastic-by-filler: none or the filler's Rigden voids (mastic_filler_scale)
+  std::string mastic_by_filler = "model";  // --mastic-by-filler: model, none or the filler's Rigden voids (mastic_filler_scale)
   double mastic_scale = 1.0;              // the factor --mastic-by-filler gave the mastic (1 with none)
   int threads = 0;
   bool force = false, exact_stones = false;
@@ -97,18 +107,28 @@ inline double least_film_m(const std::string& text, const vrut::Gradation& g, co
   return um * 1e-6;
 }
 
-// --mastic-by-filler: none (every mix on the one mastic, the model), or the
-// Rigden voids of the filler, a fraction: the factor on every Burger's
-// constant of this mix's mastic, its filler's stiffening over that of 2#,
-// the mix the mastic was calibrated on (specimen/filler_mastic.hpp). A
-// candidate of docs/validation.md, round four, not the model.
+// --mastic-by-filler, as the dimension resolved it (resolve_model_options):
+// none (every mix on the one mastic), or the Rigden voids of the filler, a
+// fraction: the factor on every Burger's constant of this mix's mastic, its
+// filler's stiffening over that of 2#, the mix the mastic was calibrated on
+// (specimen/filler_mastic.hpp).
 inline double mastic_filler_scale(const std::string& text, const vrut::Gradation& g, const vrut::MixVolumetrics& mix) {
   if (text == "none") return 1.0;
   const double voids = whole_number(text);
   if (!(voids > 0.0 && voids < 1.0))
     throw std::invalid_argument("--mastic-by-filler: '" + text +
-                                "' is none or the filler's Rigden voids, a fraction between 0 and 1");
+                                "' is model, none or the filler's Rigden voids, a fraction between 0 and 1");
   return vrut::mastic_scale_by_filler(g, vrut::builtin_gradation(2), mix, voids);
+}
+
+// The options left at "the model's" (--stone-friction -1, --mastic-by-filler
+// model) given the dimension's model: in 3D the fitted friction and the filler
+// at 0.35, in 2D the mastic's friction and one mastic. Before anything reads
+// them; summary.json records what they became.
+inline void resolve_model_options(RunOptions& o) {
+  const bool three = o.dim == 3;
+  if (o.mat.stone_friction < 0.0) o.mat.stone_friction = three ? stone_friction_3d : o.mat.friction;
+  if (o.mastic_by_filler == "model") o.mastic_by_filler = three ? mastic_by_filler_3d : "none";
 }
 
 // The mastic scaled by --mastic-by-filler's factor (vrut::scale_mastic).
@@ -131,7 +151,7 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
   app.set_config("--config", "", "read options from this file (INI/TOML, as written to DIR/config.ini)");
   app.allow_config_extras(false);  // an unknown key in a config file is an error
   app.add_option("--dim", o.dim, "2 (a section of disks, the method's) or 3 (a box of spheres, periodic along its "
-                 "depth, with no constant fitted: docs/rutting.md)")
+                 "depth, its one constant the stones' friction, fitted on 2#: docs/rutting.md)")
       ->check(CLI::IsMember({2, 3}))->capture_default_str();
   add_specimen_options(app, o.so);
   specimen_cli::add_specimen3_options(app, o.o3);
@@ -164,7 +184,8 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--friction", mat.friction, "disk-disk friction where no bond holds")->check(cli::finite_range(0.0, 10.0))
       ->capture_default_str()->group("Materials");
   app.add_option("--stone-friction", mat.stone_friction,
-                 "aggregate-aggregate friction where no bond holds (-1: the same as --friction)")
+                 "aggregate-aggregate friction where no bond holds (-1: the model's: in 3D 0.6, its one constant, "
+                 "fitted on 2#; in 2D the same as --friction)")
       ->check(cli::finite_range(-1.0, 10.0))->capture_default_str()->group("Materials");
   app.add_option("--stone-film", o.stone_film,
                  "how two stones meet: per-contact (each pair through its own mastic film, sized from where its disks "
@@ -189,10 +210,11 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
       })
       ->capture_default_str()->group("Materials");
   app.add_option("--mastic-by-filler", o.mastic_by_filler,
-                 "a candidate, not the model: each mix's mastic stiffened by its filler (passing 0.075 mm, from "
-                 "--gradation; below its smallest sieve the 0.45-power line) over 2#'s, by Krieger-Dougherty: none, "
-                 "or the filler's Rigden voids as a fraction (EN 13043 allows 0.28 to 0.45; docs/validation.md)")
+                 "each mix's mastic stiffened by its filler (passing 0.075 mm, from --gradation; below its smallest "
+                 "sieve the 0.45-power line) over 2#'s, by Krieger-Dougherty: model (3D: 0.35; 2D: none), none, or "
+                 "the filler's Rigden voids as a fraction (EN 13043 allows 0.28 to 0.45; docs/validation.md)")
       ->check([](const std::string& v) {
+        if (v == "model") return std::string();
         try {
           mastic_filler_scale(v, vrut::builtin_gradation(2), vrut::MixVolumetrics{});
         } catch (const std::invalid_argument& e) {
