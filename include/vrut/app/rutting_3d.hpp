@@ -277,7 +277,8 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   j["mastic_scale"] = o.mastic_scale;
   // Whether this run is the 3D model fitted on 2# (docs/validation.md, "The
   // frozen 3D model"): its friction and filler as the model has them.
-  j["calibrated"] = mat.stone_friction == stone_friction_3d && o.mastic_by_filler == mastic_by_filler_3d;
+  const bool calibrated = mat.stone_friction == stone_friction_3d && o.mastic_by_filler == mastic_by_filler_3d;
+  j["calibrated"] = calibrated;
   j["wall_seconds"] = wall_seconds;
   j["backend"] = o.backend;
   j["threads"] = used_threads;
@@ -315,7 +316,9 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
     std::snprintf(speed_text, sizeof speed_text, "%zu spheres, %ld steps, %.0f s, %.3g particle-steps/s", all_spheres,
                   outcome.runs.front().steps, wall_seconds, speed);
     print_result(what_was_run, outcome.runs, report, wt, ensemble, speed_text, o.out,
-                 "; 3D fits no constant: docs/validation.md");
+                 calibrated ? "; the 3D model, its stones' friction fitted on 2#: docs/validation.md"
+                            : "; not the 3D model fitted on 2# (its --stone-friction or --mastic-by-filler): "
+                              "docs/validation.md");
   }
   return outcome;
 }
