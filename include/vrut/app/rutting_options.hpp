@@ -63,7 +63,10 @@ struct RunOptions {
 
   RunOptions() {
     so.disk_radius_mm = 1.0;  // the rutting default: a full test in minutes on 2 cores (docs/rutting.md)
-    e1 = mat.mastic.E1 * 1e-6, eta1 = mat.mastic.eta1 * 1e-6, e2 = mat.mastic.E2 * 1e-6, eta2 = mat.mastic.eta2 * 1e-6;
+    // Divided, not times 1e-6: the quotient is the decimal value itself (83.34,
+    // where times 1e-6 gave 83.33999999999999), the one config.ini writes and
+    // reads back, so a run's config.ini gives it again bit for bit.
+    e1 = mat.mastic.E1 / 1e6, eta1 = mat.mastic.eta1 / 1e6, e2 = mat.mastic.E2 / 1e6, eta2 = mat.mastic.eta2 / 1e6;
     pressure_mpa = wt.pressure * 1e-6, wheel_width_mm = wt.wheel_width * 1e3, travel_mm = wt.travel * 1e3;
     aggregate_gpa = mat.aggregate_modulus * 1e-9;
   }
