@@ -221,7 +221,7 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   j["stone_film"] = stone_film;
   j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
   j["least_film_um"] = mat.least_film * 1e6;  // a candidate (docs/validation.md); 0 in the model
-  j["stone_friction"] = mat.stone_friction;
+  j["stone_friction"] = vrut::stone_friction_of(mat);
   j["mastic_by_filler"] = o.mastic_by_filler;  // a candidate in 2D (docs/validation.md); none in the model
   j["mastic_scale"] = o.mastic_scale;
   j["wall_seconds"] = wall_seconds;

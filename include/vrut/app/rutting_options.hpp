@@ -126,11 +126,11 @@ inline double mastic_filler_scale(const std::string& text, const vrut::Gradation
 
 // The options left at "the model's" (--stone-friction -1, --mastic-by-filler
 // model) given the dimension's model: in 3D the fitted friction and the filler
-// at 0.35, in 2D the mastic's friction and one mastic. Before anything reads
-// them; summary.json records what they became.
+// at 0.35; in 2D one mastic, and a stone friction of -1 left for the library
+// to read as the mastic's (vrut::stone_friction_of). Before anything reads them.
 inline void resolve_model_options(RunOptions& o) {
   const bool three = o.dim == 3;
-  if (o.mat.stone_friction < 0.0) o.mat.stone_friction = three ? stone_friction_3d : o.mat.friction;
+  if (three && o.mat.stone_friction < 0.0) o.mat.stone_friction = stone_friction_3d;
   if (o.mastic_by_filler == "model") o.mastic_by_filler = three ? mastic_by_filler_3d : "none";
 }
 
