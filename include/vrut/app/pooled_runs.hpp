@@ -7,7 +7,8 @@
 // images with any other (each numbers its images from 1), a seed counted
 // twice, a run stopped before its end, and fewer than two specimens. A
 // setting that one run's config.ini lacks (an option newer than that run)
-// is not compared.
+// is not compared. The model's options that a run resolves (--stone-friction
+// -1, --mastic-by-filler model) are compared as the run resolved them.
 // Host-only.
 #include <vrut/analysis/seeds_csv.hpp>
 
@@ -67,6 +68,25 @@ inline std::map<std::string, std::string> read_config_ini(const std::filesystem:
   return settings;
 }
 
+// The stones' friction and the filler's mastic as the run resolved them, in
+// place of its config.ini's text: "-1" and "model" mean the model of the
+// run's dimension and version (app/rutting_options.hpp,
+// resolve_model_options), so the same model typed out or left to the
+// defaults pools, and -1 of two versions does not. A run of version 0.2 on
+// records them in summary.json; one before took a stone friction of -1 as
+// the mastic's, its --friction, in 2D and 3D alike.
+inline void resolve_model_settings(std::map<std::string, std::string>& settings, const nlohmann::json* summary) {
+  if (summary != nullptr && summary->contains("stone_friction")) {
+    settings["stone-friction"] = summary->at("stone_friction").dump();  // shortest text that reads back (0.6)
+    if (summary->contains("mastic_by_filler"))
+      settings["mastic-by-filler"] = summary->at("mastic_by_filler").dump();  // quoted, as config.ini has it
+    return;
+  }
+  const auto stone = settings.find("stone-friction"), mastic = settings.find("friction");
+  if (stone != settings.end() && mastic != settings.end() && same_setting(stone->second, "-1"))
+    stone->second = mastic->second;
+}
+
 // A single run's summary.json as a seeds.csv row: its one specimen.
 inline SeedRow single_run_row(const nlohmann::json& j, const std::string& path) {
   if (j.contains("ensemble"))
@@ -115,15 +135,21 @@ inline PooledRun read_pooled_run(const std::string& given) {
   PooledRun run;
   run.path = file.string();
   run.settings = read_config_ini(file.parent_path() / "config.ini");
-  if (file.extension() == ".json") {
-    std::ifstream in(file);
-    if (!in) throw std::runtime_error("cannot read " + run.path);
-    nlohmann::json j;
+  // The run's summary.json: the file given, or the one beside its seeds.csv.
+  const fs::path summary_file = file.extension() == ".json" ? file : file.parent_path() / "summary.json";
+  nlohmann::json j;
+  const bool has_summary = fs::exists(summary_file);
+  if (has_summary) {
+    std::ifstream in(summary_file);
+    if (!in) throw std::runtime_error("cannot read " + summary_file.string());
     try {
       in >> j;
     } catch (const nlohmann::json::exception&) {
-      throw std::runtime_error(run.path + " is not JSON");
+      throw std::runtime_error(summary_file.string() + " is not JSON");
     }
+  }
+  resolve_model_settings(run.settings, has_summary ? &j : nullptr);
+  if (file.extension() == ".json") {
     try {
       run.rows.push_back(single_run_row(j, run.path));
     } catch (const nlohmann::json::exception& e) {
