@@ -251,6 +251,14 @@ rutting)
   if awk -F': ' '/"mastic_scale"/ { s = $2 + 0 } END { exit !(s > 1) }' "$work/run3d/summary.json"; then
     echo "ok:   3D 1#'s mastic stiffened by its filler"
   else echo "FAIL: 3D 1#'s mastic not stiffened by its filler"; failures=$((failures + 1)); fi
+  # At its defaults the command line runs the library's frozen 3D model
+  # (protocol/rutting/model3.hpp): the box of test_rutting3.cpp's "a short
+  # run of the frozen model" gives that test's pinned rut, to the bit (a
+  # regression pin: it changes with that one).
+  expect "0" "3D: rut depth" -- --dim 3 --gradation 1 --width-mm 40 --sphere-radius-mm 2 --shift 1e6 --settle-steps 300 \
+    --samples 24 --out model3
+  grep -qF '"rut_depth_mm": 3.5637703875242845,' "$work/model3/summary.json" ||
+    { echo "FAIL: the 3D defaults are not the library's frozen 3D model (pinned rut 3.5637703875242845)"; failures=$((failures + 1)); }
   expect "0" "rut depth" -- "${small[@]}" --out run1
   for f in summary.json deformation.csv deformation.png specimen.png rut_forming.png displacement.png final.vtk config.ini; do
     [[ -s "$work/run1/$f" ]] || { echo "FAIL: no $f"; failures=$((failures + 1)); }

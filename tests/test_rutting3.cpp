@@ -5,6 +5,7 @@
 #include "rutting_checks.hpp"
 #include "small_box3.hpp"
 
+#include <vrut/protocol/rutting/model3.hpp>
 #include <vrut/protocol/rutting/run3.hpp>
 
 #include <catch2/catch.hpp>
@@ -109,6 +110,60 @@ TEST_CASE("3D: a short run on a box of 1# gives the numbers pinned for it", "[ru
                                  {5, 0.33898330631756957},
                                  {11, 1.1619210006968139},
                                  {17, 2.4154369406876457}}});
+}
+
+// The frozen 3D model (protocol/rutting/model3.hpp), what vrut-rutting
+// --dim 3 runs at its defaults: the factor 1, the stones' friction 0.6, and
+// each mix's mastic times its filler's scale over 2#'s, worked by hand in
+// test_filler_mastic.cpp (1.6906 for 1#, 0.59960 for 3#, to 1e-4); 2#'s
+// mastic is the one calibrated, to the bit.
+TEST_CASE("3D: the frozen model's materials, mix by mix", "[rutting3][model3]") {
+  const vrut::RuttingMaterials base;
+  const double scale[] = {1.6906, 1.0, 0.59960};
+  for (int mix = 1; mix <= 3; ++mix) {
+    INFO(mix << "#");
+    const vrut::SpecimenSettings3 s = vrut_test::small_box3(mix, 1);
+    const vrut::RuttingMaterials m = vrut::rutting_model3_materials(s.gradation, s.mix);
+    CHECK(m.stone_friction == 0.6);
+    CHECK(m.mastic_aggregate_factor == 1.0);
+    CHECK(m.mastic.E1 == Approx(scale[mix - 1] * base.mastic.E1).epsilon(1e-4));
+    CHECK(m.mastic.eta1 == Approx(scale[mix - 1] * base.mastic.eta1).epsilon(1e-4));
+    CHECK(m.mastic.E2 == Approx(scale[mix - 1] * base.mastic.E2).epsilon(1e-4));
+    CHECK(m.mastic.eta2 == Approx(scale[mix - 1] * base.mastic.eta2).epsilon(1e-4));
+    // The stones' spring (the ratio times the mastic's E1) where it was.
+    CHECK(m.stone_contact_ratio * m.mastic.E1 == Approx(base.stone_contact_ratio * base.mastic.E1).epsilon(1e-12));
+    if (mix == 2) {
+      CHECK(m.mastic.E1 == base.mastic.E1);
+      CHECK(m.mastic.eta2 == base.mastic.eta2);
+      CHECK(m.stone_contact_ratio == base.stone_contact_ratio);
+    }
+  }
+}
+
+// The frozen 3D model's short run, the box of the pin above (1#, 2 mm
+// spheres, alpha_T 1e6, 24 samples), pinned, so that the model stays one
+// call away and fixed. A regression pin, pinned 2026-12-06 (rutting_checks.hpp
+// says when it may change).
+TEST_CASE("3D: a short run of the frozen model on a box of 1# gives the numbers pinned for it",
+          "[rutting3][pinned][model3]") {
+  vrut::SpecimenSettings3 s = vrut_test::small_box3(1, 1, 40.0);
+  s.sphere_radius = 2.0;
+  vrut::RuttingNumerics n = numerics3();
+  n.shift = 1e6;
+  n.samples = 24;
+  const vrut::RuttingResult3 run = vrut::run_rutting3<Kokkos::DefaultHostExecutionSpace>(
+      vrut::generate_specimen3(s), vrut::WheelTracking{}, vrut::rutting_model3_materials(s.gradation, s.mix), n);
+  const vrut::RuttingResult& res = run.result;
+  INFO(res.particles << " spheres, " << res.steps << " steps, dt " << res.dt << " s");
+  REQUIRE(res.samples.size() == 24);
+  CHECK(res.deformation_final > 1e-3);  // the plate went down
+  vrut_test::check_pinned(res, {3.5637703875242845,
+                                2.2519682939226455,
+                                480.25537013002742,
+                                {{1, 0.048419417644857132},
+                                 {5, 0.32377363184232094},
+                                 {11, 1.1088341452432302},
+                                 {17, 2.2694870588630609}}});
 }
 
 // Two seeds side by side in one Simulation give each seed's single run, bit

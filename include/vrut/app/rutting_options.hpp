@@ -10,6 +10,7 @@
 #include <vrut/backend.hpp>
 #include <vrut/io/checkpoint.hpp>
 #include <vrut/protocol/rutting.hpp>
+#include <vrut/protocol/rutting/model3.hpp>
 #include <vrut/specimen/binder_film.hpp>
 #include <vrut/specimen/filler_mastic.hpp>
 
@@ -29,7 +30,9 @@ namespace vrut::app {
 // round four, "The frozen 3D model"). The 3D model before it: --stone-friction
 // 1 --mastic-by-filler none. 2D keeps its own: the stones' friction that of
 // the mastic (--friction) and one mastic for every mix.
-inline constexpr double stone_friction_3d = 0.6;
+// The library's vrut::RuttingModel3 (protocol/rutting/model3.hpp) holds the
+// same constants; tests/test_rutting3.cpp checks that they agree.
+inline constexpr double stone_friction_3d = vrut::RuttingModel3::stone_friction;
 inline constexpr const char* mastic_by_filler_3d = "0.35";
 
 // Every option of a run: parsed from the command line, or on --resume from
@@ -58,7 +61,7 @@ struct RunOptions {
   // below 1, a mastic softer against a stone than against itself, has no
   // physical reading, so none is fitted (docs/validation.md, "The factor at
   // 1 mm"). The 2D calibration's 4 held only at 1.5 mm spheres.
-  double mastic_aggregate_factor_3d = 1.0;
+  double mastic_aggregate_factor_3d = vrut::RuttingModel3::mastic_aggregate_factor;
   double e1 = 0, eta1 = 0, e2 = 0, eta2 = 0, pressure_mpa = 0, wheel_width_mm = 0, travel_mm = 0, aggregate_gpa = 0;
 
   RunOptions() {
