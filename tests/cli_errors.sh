@@ -259,6 +259,13 @@ rutting)
     --samples 24 --out model3
   grep -qF '"rut_depth_mm": 3.5637703875242845,' "$work/model3/summary.json" ||
     { echo "FAIL: the 3D defaults are not the library's frozen 3D model (pinned rut 3.5637703875242845)"; failures=$((failures + 1)); }
+  # The same model typed out, the filler's voids as .35: the same run, and it says it is the model.
+  expect "0" "3D: rut depth" -- --dim 3 --gradation 1 --width-mm 40 --sphere-radius-mm 2 --shift 1e6 --settle-steps 300 \
+    --samples 24 --stone-friction 0.6 --mastic-by-filler .35 --out model3_typed
+  cmp -s "$work/model3/deformation.csv" "$work/model3_typed/deformation.csv" ||
+    { echo "FAIL: the 3D model typed out is not the same run as at the defaults"; failures=$((failures + 1)); }
+  grep -qF '"calibrated": true,' "$work/model3_typed/summary.json" ||
+    { echo "FAIL: the 3D model typed out (.35) is not said to be the model"; failures=$((failures + 1)); }
   expect "0" "rut depth" -- "${small[@]}" --out run1
   for f in summary.json deformation.csv deformation.png specimen.png rut_forming.png displacement.png final.vtk config.ini; do
     [[ -s "$work/run1/$f" ]] || { echo "FAIL: no $f"; failures=$((failures + 1)); }

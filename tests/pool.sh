@@ -122,39 +122,49 @@ refused "a run still going" "f060-s6 does not exist yet: its run is still going,
 refused "a run still going, named with a slash" "f060-s6/ does not exist yet" "$work/s1" "$work/f060-s6/"
 refused "not a seeds.csv" "has no column rut_depth_mm" "$work/foreign.csv"
 refused "a single run stopped before its end" "seed 4 was stopped before its end" "$work/s1" "$work/s4-stopped"
-refused "another model" "other settings (their config.ini): shift=1e5 against shift=10000, stone-friction=1 against stone-friction=0.35: pool one mix's runs of one model" "$work/s1" "$work/s2-f1"
+refused "another model" "other settings (their config.ini; .*): shift=1e5 against shift=10000, stone-friction=1 against stone-friction=0.35: pool one mix's runs of one model" "$work/s1" "$work/s2-f1"
 refused "a run from images with another" "img1/summary.json was run from images" "$work/img1" "$work/s2"
 refused "a folder with no results" "empty has no seeds.csv or summary.json: is its run still going" "$work/s1" "$work/empty"
-refused "another mix" "other settings (their config.ini): gradation=3 against gradation=2:" "$work/s1" "$work/s2-mix3"
+refused "another mix" "other settings (their config.ini; .*): gradation=3 against gradation=2:" "$work/s1" "$work/s2-mix3"
 refused "2D with 3D" "s2-3d/summary.json is a 3D run and .*s1/summary.json a 2D one" "$work/s1" "$work/s2-3d"
 refused "an ensemble's summary.json" "is an ensemble's summary: give its seeds.csv" "$work/ensemble13/summary.json" "$work/s2"
-# The model's options compared as each run resolved them: a run of 0.2 on
-# records its stones' friction and filler in summary.json, where 3D's
-# defaults (-1, model) are 0.6 and 0.35; a run before 0.2 has no such keys
-# and took -1 as its --friction (1), in 3D too.
-resolved() {  # resolved DIR SEED STONE_FRICTION_TYPED FILLER_TYPED [STONE_FRICTION_RUN FILLER_RUN]
+# The model's options compared as each run resolved them: summary.json
+# records the filler (mastic_by_filler, as typed) since c53d8f2 and the
+# stones' friction (stone_friction) since 0.2, where 3D's defaults (-1,
+# model) are 0.6 and 0.35. Before 0.2 a negative stone friction was the
+# run's --friction (1), in 3D too; before c53d8f2 there was one mastic.
+# config.ini as CLI11 writes it: text quoted, a number given to a text
+# option bare.
+resolved() {  # resolved DIR SEED CONFIG_LINES [SUMMARY_KEYS]
   single "$1" "$2" 12 3.15 200 2 3
-  printf 'friction=1\nstone-friction=%s\nmastic-by-filler="%s"\n' "$3" "$4" >>"$work/$1/config.ini"
-  [ -n "${5:-}" ] && sed -i "s/^{/{\"stone_friction\": $5, \"mastic_by_filler\": \"$6\", /" "$work/$1/summary.json"
+  printf 'friction=1\n%b' "$3" >>"$work/$1/config.ini"
+  [ -n "${4:-}" ] && sed -i "s/^{/{$4, /" "$work/$1/summary.json"
   return 0
 }
-resolved m3-defaults 5 -1 model 0.6 0.35
-resolved m3-typed 6 0.6 .35 0.6 0.35
-resolved m3-before 7 1 none 1.0 none
-resolved m3-version-0.1 8 -1 none
+resolved m3-defaults 5 'stone-friction=-1\nmastic-by-filler="model"\n' '"stone_friction": 0.6, "mastic_by_filler": "0.35"'
+resolved m3-typed 6 'stone-friction=0.6\nmastic-by-filler=.35\n' '"stone_friction": 0.6, "mastic_by_filler": ".35"'
+resolved m3-typed-0.1 11 'stone-friction=0.6\nmastic-by-filler=0.35\n' '"mastic_by_filler": "0.35"'
+resolved m3-before 7 'stone-friction=1\nmastic-by-filler="none"\n' '"stone_friction": 1.0, "mastic_by_filler": "none"'
+resolved m3-version-0.1 8 'stone-friction=-0.5\nmastic-by-filler="none"\n' '"mastic_by_filler": "none"'
+resolved m3-before-filler 9 'stone-friction=-1\n'
+resolved m3-no-filler-0.6 10 'stone-friction=0.6\n'
 pools() {  # pools NAME SEEDS ARGS...: pooled, the specimens' line first
   local name=$1 seeds=$2; shift 2
   local out code; out=$("$exe" "$@" 2>&1); code=$?
   if [ "$code" -eq 0 ] && [ "$(head -n 1 <<<"$out")" = "specimens: 2 (seeds $seeds)" ]; then echo "ok:   $name"
   else echo "FAIL: $name, exit $code, got:"; echo "$out"; failures=$((failures + 1)); fi
 }
-pools "the 3D model at its defaults and typed out" "5 6" "$work/m3-defaults" "$work/m3-typed"
-pools "a run before 0.2 at -1 and one typed as it ran" "7 8" "$work/m3-before" "$work/m3-version-0.1"
+pools "the 3D model at its defaults and typed out (.35)" "5 6" "$work/m3-defaults" "$work/m3-typed"
+pools "the 3D model at its defaults and typed out before 0.2" "5 11" "$work/m3-defaults" "$work/m3-typed-0.1"
+pools "a run before 0.2 at a negative friction and one typed as it ran" "7 8" "$work/m3-before" "$work/m3-version-0.1"
+pools "a run before the filler option and one typed as it ran" "9 7" "$work/m3-before-filler" "$work/m3-before"
 refused "the 3D model at its defaults and the model before" \
-  'mastic-by-filler="none" against mastic-by-filler="0.35", stone-friction=1.0 against stone-friction=0.6' \
+  'mastic-by-filler=none against mastic-by-filler=0.35, stone-friction=1.0 against stone-friction=0.6' \
   "$work/m3-defaults" "$work/m3-before"
-refused "-1 of version 0.1 (the mastic's 1) and of 0.2 (the model's 0.6)" \
+refused "a negative friction of version 0.1 (the mastic's 1) and -1 of 0.2 (the model's 0.6)" \
   'stone-friction=1 against stone-friction=0.6' "$work/m3-defaults" "$work/m3-version-0.1"
+refused "a run before the filler option (one mastic) and the 3D model" \
+  'mastic-by-filler=none against mastic-by-filler=0.35' "$work/m3-defaults" "$work/m3-no-filler-0.6"
 if [ -n "$rutting" ]; then
   printed=$("$rutting" --width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300 --seeds 1-2 \
     --out "$work/ensemble" 2>&1 | grep "2 specimens: rut depth")

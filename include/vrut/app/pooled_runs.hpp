@@ -45,9 +45,17 @@ inline bool setting_of_the_run_only(const std::string& key) {
   return keys.count(key) > 0;
 }
 
-// Two config.ini values of one setting agree: the same text, or the same
-// number however it was typed (0.35 and .35, 1e4 and 10000).
-inline bool same_setting(const std::string& a, const std::string& b) {
+// A config.ini value without the quotes CLI11 puts around text ("model";
+// a number given to a text option, 0.35, it writes bare).
+inline std::string unquoted(const std::string& value) {
+  if (value.size() >= 2 && value.front() == '"' && value.back() == '"') return value.substr(1, value.size() - 2);
+  return value;
+}
+
+// Two config.ini values of one setting agree: the same text, quoted or not,
+// or the same number however it was typed (0.35 and .35, 1e4 and 10000).
+inline bool same_setting(const std::string& quoted_a, const std::string& quoted_b) {
+  const std::string a = unquoted(quoted_a), b = unquoted(quoted_b);
   if (a == b) return true;
   char *end_a = nullptr, *end_b = nullptr;
   const double x = std::strtod(a.c_str(), &end_a), y = std::strtod(b.c_str(), &end_b);
@@ -72,19 +80,24 @@ inline std::map<std::string, std::string> read_config_ini(const std::filesystem:
 // place of its config.ini's text: "-1" and "model" mean the model of the
 // run's dimension and version (app/rutting_options.hpp,
 // resolve_model_options), so the same model typed out or left to the
-// defaults pools, and -1 of two versions does not. A run of version 0.2 on
-// records them in summary.json; one before took a stone friction of -1 as
-// the mastic's, its --friction, in 2D and 3D alike.
+// defaults pools, and -1 of two versions does not. summary.json records
+// them (mastic_by_filler since c53d8f2, stone_friction since version 0.2);
+// before 0.2 a negative stone friction was the mastic's, its --friction,
+// in 2D and 3D alike, and before --mastic-by-filler every mix had one
+// mastic (none). A run with no config.ini compares nothing.
 inline void resolve_model_settings(std::map<std::string, std::string>& settings, const nlohmann::json* summary) {
+  if (settings.empty()) return;
   if (summary != nullptr && summary->contains("stone_friction")) {
-    settings["stone-friction"] = summary->at("stone_friction").dump();  // shortest text that reads back (0.6)
-    if (summary->contains("mastic_by_filler"))
-      settings["mastic-by-filler"] = summary->at("mastic_by_filler").dump();  // quoted, as config.ini has it
-    return;
+    settings["stone-friction"] = summary->at("stone_friction").dump();  // the shortest text that reads back (0.6)
+  } else {
+    const auto stone = settings.find("stone-friction"), mastic = settings.find("friction");
+    if (stone != settings.end() && mastic != settings.end() && std::strtod(stone->second.c_str(), nullptr) < 0.0)
+      stone->second = mastic->second;
   }
-  const auto stone = settings.find("stone-friction"), mastic = settings.find("friction");
-  if (stone != settings.end() && mastic != settings.end() && same_setting(stone->second, "-1"))
-    stone->second = mastic->second;
+  if (summary != nullptr && summary->contains("mastic_by_filler"))
+    settings["mastic-by-filler"] = summary->at("mastic_by_filler").get<std::string>();  // as typed, compared as a number
+  else if (settings.count("mastic-by-filler") == 0)
+    settings["mastic-by-filler"] = "none";
 }
 
 // A single run's summary.json as a seeds.csv row: its one specimen.
@@ -196,7 +209,9 @@ inline std::vector<SeedRow> pool_runs(const std::vector<std::string>& given) {
           differences += (differences.empty() ? "" : ", ") + key + "=" + value + " against " + key + "=" + there->second;
       }
       if (!differences.empty())
-        throw std::runtime_error(run.path + " and " + other.path + " were run with other settings (their config.ini): " +
+        throw std::runtime_error(run.path + " and " + other.path +
+                                 " were run with other settings (their config.ini; the stones' friction and the filler "
+                                 "as each run resolved them): " +
                                  differences + ": pool one mix's runs of one model");
     }
     for (const auto& row : run.rows) {

@@ -277,7 +277,8 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   j["mastic_scale"] = o.mastic_scale;
   // Whether this run is the 3D model fitted on 2# (docs/validation.md, "The
   // frozen 3D model"): its friction and filler as the model has them.
-  const bool calibrated = mat.stone_friction == stone_friction_3d && o.mastic_by_filler == mastic_by_filler_3d;
+  const bool calibrated = mat.stone_friction == stone_friction_3d &&
+                          whole_number(o.mastic_by_filler) == vrut::RuttingModel3::filler_rigden_voids;  // .35 too
   j["calibrated"] = calibrated;
   j["wall_seconds"] = wall_seconds;
   j["backend"] = o.backend;

@@ -30,8 +30,10 @@ namespace vrut::app {
 // round four, "The frozen 3D model"). The 3D model before it: --stone-friction
 // 1 --mastic-by-filler none. 2D keeps its own: the stones' friction that of
 // the mastic (--friction) and one mastic for every mix.
-// The library's vrut::RuttingModel3 (protocol/rutting/model3.hpp) holds the
-// same constants; tests/test_rutting3.cpp checks that they agree.
+// The constants are the library's vrut::RuttingModel3
+// (protocol/rutting/model3.hpp); the filler's as the option's text.
+// tests/cli_errors.sh checks that a run at these defaults is the library's
+// model, to the bit.
 inline constexpr double stone_friction_3d = vrut::RuttingModel3::stone_friction;
 inline constexpr const char* mastic_by_filler_3d = "0.35";
 
@@ -124,7 +126,7 @@ inline double mastic_filler_scale(const std::string& text, const vrut::Gradation
   if (!(voids > 0.0 && voids < 1.0))
     throw std::invalid_argument("--mastic-by-filler: '" + text +
                                 "' is model, none or the filler's Rigden voids, a fraction between 0 and 1");
-  return vrut::mastic_scale_by_filler(g, vrut::builtin_gradation(2), mix, voids);
+  return vrut::mastic_scale_by_filler(g, vrut::builtin_gradation(vrut::RuttingModel3::calibration_mix), mix, voids);
 }
 
 // The options left at "the model's" (--stone-friction -1, --mastic-by-filler

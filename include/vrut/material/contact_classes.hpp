@@ -38,9 +38,9 @@ struct RuttingMaterials {
   double aggregate_nu = 0.25;
   double mastic_density = 2400.0, aggregate_density = 2700.0;  // kg/m^3
   double friction = 1.0;                // disk-disk, where no bond holds (calibrated, crushed stone)
-  // Aggregate on aggregate only, where no bond holds; < 0: `friction`. A
-  // candidate of the gradation study: stone on stone against contacts
-  // through mastic (docs/validation.md).
+  // Aggregate on aggregate only, where no bond holds; < 0: `friction`, as
+  // the 2D model has it. The frozen 3D model's one fitted constant, 0.6
+  // (protocol/rutting/model3.hpp; docs/validation.md, round four).
   double stone_friction = -1.0;
   // How two stones meet (docs/validation.md, the gradation study): the
   // contact between disks of two different aggregates.
