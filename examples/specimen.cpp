@@ -79,6 +79,8 @@ int main(int argc, char** argv) {
       draw::surface3_png(sp, dir.file("surface.png").string());
       write_specimen3_vtk(sp, dir.file("specimen.vtk").string());
       dir.commit();
+      const std::string jammed = jammed_compaction_note(sp.placement);
+      if (!jammed.empty()) std::fprintf(stderr, "%s\n", jammed.c_str());
       const std::string packing =
           sp.placement.compaction_steps > 0
               ? "compacted in " + std::to_string(sp.placement.compaction_steps) + " steps"

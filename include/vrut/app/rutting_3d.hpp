@@ -168,8 +168,11 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
     } catch (const std::runtime_error& e) {  // the stones' fraction could not be reached
       throw std::runtime_error((my_seeds.size() > 1 ? "" : "seed " + std::to_string(my_seeds.front()) + ": ") + e.what());
     }
-    for (std::size_t e = 0; e < my_seeds.size(); ++e)
+    for (std::size_t e = 0; e < my_seeds.size(); ++e) {
       stones_to_keep[std::to_string(my_seeds[e])] = vrut::stones3_state(specimens[e].placement);
+      const std::string jammed = specimen_cli::jammed_compaction_note(specimens[e].placement);
+      if (!jammed.empty()) std::fprintf(stderr, "seed %llu: %s\n", static_cast<unsigned long long>(my_seeds[e]), jammed.c_str());
+    }
   }
   if (stones_kept == nullptr && checkpoint != nullptr) checkpoint->add_to_header("stones3", std::move(stones_to_keep));
   const vrut::Specimen3& sp = specimens.front();

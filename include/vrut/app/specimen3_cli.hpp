@@ -68,6 +68,16 @@ inline vrut::SpecimenSettings3 to_settings3(const SpecimenOptions& o, const Spec
   return s;
 }
 
+// A line for a compaction that jammed under its lid (compaction3.hpp);
+// empty where the stones settled.
+inline std::string jammed_compaction_note(const vrut::Placement3& p) {
+  if (p.pairs_within_clearance == 0 && p.stones_within_clearance_of_a_wall == 0) return "";
+  return "the compaction jammed under its lid: " + std::to_string(p.pairs_within_clearance) + " stone pairs and " +
+         std::to_string(p.stones_within_clearance_of_a_wall) +
+         " stones at a wall are nearer than its 0.001 mm clearance, none overlapping (the placement's test): "
+         "the specimen is kept";
+}
+
 // generate_specimen3 with a progress bar for the placement (`label`) and,
 // where there is one, for the compaction (its bar runs to the most steps it
 // may take; it ends early when the stones have settled).
@@ -131,6 +141,9 @@ inline nlohmann::json specimen3_summary(const vrut::Specimen3& sp) {
   j["stone_packing"] = sp.placement.compaction_steps > 0 ? "compaction" : "random addition";
   if (sp.placement.compaction_steps > 0) {
     j["compaction_steps"] = sp.placement.compaction_steps;
+    // Left nearer than the compaction's clearance where it jammed under its lid (0: settled).
+    j["compaction_pairs_within_clearance"] = sp.placement.pairs_within_clearance;
+    j["compaction_stones_within_clearance_of_a_wall"] = sp.placement.stones_within_clearance_of_a_wall;
     j["compaction_threads"] = sp.settings.compaction.threads;  // the same packing on any count
   }
   j["stone_volume_fraction"] = {{"target", sp.placement.target_fraction}, {"achieved", sp.placement.achieved_fraction}};

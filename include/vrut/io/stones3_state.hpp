@@ -44,6 +44,8 @@ inline nlohmann::json stones3_state(const Placement3& p) {
   w.value("achieved_fraction", p.achieved_fraction);
   w.value("jammed", p.jammed);
   w.value("compaction_steps", p.compaction_steps);
+  w.value("pairs_within_clearance", p.pairs_within_clearance);
+  w.value("stones_within_clearance_of_a_wall", p.stones_within_clearance_of_a_wall);
   return w.state();
 }
 
@@ -68,6 +70,11 @@ inline Placement3 placement_from_stones3_state(const nlohmann::json& state, cons
   r.value("achieved_fraction", p.achieved_fraction);
   r.value("jammed", p.jammed);
   r.value("compaction_steps", p.compaction_steps);
+  // Kept since 2026-12-06; a checkpoint from before has none (its stones settled).
+  if (state.contains("pairs_within_clearance")) {
+    r.value("pairs_within_clearance", p.pairs_within_clearance);
+    r.value("stones_within_clearance_of_a_wall", p.stones_within_clearance_of_a_wall);
+  }
   const std::size_t n = size_class.size();
   std::size_t all_vertices = 0, all_planes = 0;
   for (std::size_t i = 0; i < vertex_count.size(); ++i) all_vertices += static_cast<std::size_t>(vertex_count[i]);

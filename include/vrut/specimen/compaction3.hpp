@@ -15,7 +15,10 @@
 //   3. The lid held, the stones settle with a little drag on their motion
 //      until no two overlap and none crosses a wall (kept `clearance`
 //      apart, below); the result is checked with the placement's own
-//      overlap test.
+//      overlap test. A packing can jam under the lid with some pairs (or
+//      stones and walls) nearer than the clearance and none overlapping:
+//      after settle_steps it is kept, if the placement's test passes, and
+//      Placement3 counts those pairs.
 // The stones keep moving as they settle, which lets them leave the chains of
 // contacts that stop a projection or a growth (docs/specimen.md). The
 // dynamics is only a way to a packing, so it has no units of force: a mass
@@ -388,6 +391,9 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
     if (compacting && step % 100 == 0) compacting(step, most);
   }
   if (compacting) compacting(most, most);
+  // The last step's move may have settled them: look once more. Where not,
+  // touching_pairs and crossing are the stones' last state.
+  if (!settled) settled = !loads();
 
   Placement3 out;
   out.depth = depth;
@@ -413,7 +419,7 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
     });
     grid.insert(static_cast<int>(i), box);
   }
-  if (!settled || overlapping > 0 || outside > 0) {
+  if (overlapping > 0 || outside > 0) {
     std::ostringstream msg;
     msg << "cannot compact the stones to the volume fraction " << volume / (width * height * depth);
     if (!settled) {
@@ -430,6 +436,10 @@ Placement3 compact_stones3(const Stereology& st, const PlacementSettings3& ps, c
     throw std::runtime_error(msg.str());
   }
   out.achieved_fraction = volume / (width * height * depth);
+  if (!settled) {
+    out.pairs_within_clearance = touching_pairs;
+    for (char c : crossing) out.stones_within_clearance_of_a_wall += c;
+  }
   return out;
 }
 
