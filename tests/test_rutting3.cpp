@@ -50,6 +50,28 @@ vrut::RuttingResult3 run_small_box(const vrut::Specimen3& specimen) {
   return vrut::run_rutting3<Space>(specimen, vrut::WheelTracking{}, materials3(), numerics3());
 }
 
+// The short pinned runs' box: 1#, whose stones random addition places at
+// once, 40 mm wide, of 2 mm spheres (about 1,450).
+vrut::SpecimenSettings3 short_box_of_1() {
+  vrut::SpecimenSettings3 s = vrut_test::small_box3(1, 1, 40.0);
+  s.sphere_radius = 2.0;
+  return s;
+}
+
+// That box run short, alpha_T 1e6 (about 130 loading steps), 24 samples,
+// on these materials.
+vrut::RuttingResult3 short_run_on_1(const vrut::RuttingMaterials& materials) {
+  vrut::RuttingNumerics n = numerics3();
+  n.shift = 1e6;
+  n.samples = 24;
+  const vrut::RuttingResult3 run = vrut::run_rutting3<Kokkos::DefaultHostExecutionSpace>(
+      vrut::generate_specimen3(short_box_of_1()), vrut::WheelTracking{}, materials, n);
+  INFO(run.result.particles << " spheres, " << run.result.steps << " steps, dt " << run.result.dt << " s");
+  REQUIRE(run.result.samples.size() == 24);
+  CHECK(run.result.deformation_final > 1e-3);  // the plate went down
+  return run;
+}
+
 // Every number of two 3D runs the same bits: the 2D result's (curve,
 // scalars, groups), and each sphere's final place and displacement.
 void require_same3(const vrut::RuttingResult3& a, const vrut::RuttingResult3& b) {
@@ -92,17 +114,8 @@ TEST_CASE("3D: a small box of 2# gives the numbers pinned for it", "[rutting3][p
 // random draw whose order the compiler chose once gave clang another
 // specimen. A regression pin, pinned 2026-12-04 as the one above.
 TEST_CASE("3D: a short run on a box of 1# gives the numbers pinned for it", "[rutting3][pinned][small]") {
-  vrut::SpecimenSettings3 s = vrut_test::small_box3(1, 1, 40.0);
-  s.sphere_radius = 2.0;
-  vrut::RuttingNumerics n = numerics3();
-  n.shift = 1e6;
-  n.samples = 24;
-  const vrut::RuttingResult3 run = vrut::run_rutting3<Kokkos::DefaultHostExecutionSpace>(
-      vrut::generate_specimen3(s), vrut::WheelTracking{}, materials3(), n);
+  const vrut::RuttingResult3 run = short_run_on_1(materials3());
   const vrut::RuttingResult& res = run.result;
-  INFO(res.particles << " spheres, " << res.steps << " steps, dt " << res.dt << " s");
-  REQUIRE(res.samples.size() == 24);
-  CHECK(res.deformation_final > 1e-3);  // the plate went down
   vrut_test::check_pinned(res, {3.6168017509490835,
                                 2.4005690794589127,
                                 517.99299161080921,
@@ -146,17 +159,9 @@ TEST_CASE("3D: the frozen model's materials, mix by mix", "[rutting3][model3]") 
 // says when it may change).
 TEST_CASE("3D: a short run of the frozen model on a box of 1# gives the numbers pinned for it",
           "[rutting3][pinned][model3]") {
-  vrut::SpecimenSettings3 s = vrut_test::small_box3(1, 1, 40.0);
-  s.sphere_radius = 2.0;
-  vrut::RuttingNumerics n = numerics3();
-  n.shift = 1e6;
-  n.samples = 24;
-  const vrut::RuttingResult3 run = vrut::run_rutting3<Kokkos::DefaultHostExecutionSpace>(
-      vrut::generate_specimen3(s), vrut::WheelTracking{}, vrut::rutting_model3_materials(s.gradation, s.mix), n);
+  const vrut::SpecimenSettings3 s = short_box_of_1();
+  const vrut::RuttingResult3 run = short_run_on_1(vrut::rutting_model3_materials(s.gradation, s.mix));
   const vrut::RuttingResult& res = run.result;
-  INFO(res.particles << " spheres, " << res.steps << " steps, dt " << res.dt << " s");
-  REQUIRE(res.samples.size() == 24);
-  CHECK(res.deformation_final > 1e-3);  // the plate went down
   vrut_test::check_pinned(res, {3.5637703875242845,
                                 2.2519682939226455,
                                 480.25537013002742,
