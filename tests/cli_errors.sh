@@ -194,6 +194,10 @@ rutting)
   for option in --aggregate-nu --mastic-nu; do
     for value in -0.1 0.5 nan inf; do expect "2" "^$option: " -- "$option" "$value" --out bad; done
   done
+  # The step's safety: -1 (the dimension's) or in [0.001, 1]; no other negative.
+  for value in -0.5 -2 0 1.5 nan inf; do
+    expect "2" "^--timestep-safety: must be -1 or \\[0.001, 1\\], got" -- --timestep-safety "$value" --out bad
+  done
   expect "2" "must last longer than minute 45" -- --minutes 30 --out bad
   expect "2" "retains nothing on the 2.36" -- --gradation no_stones.csv --out bad
   expect "2" "at least two sieves" -- --gradation one_sieve.csv --out bad
@@ -252,21 +256,26 @@ rutting)
     echo "ok:   3D 1#'s mastic stiffened by its filler"
   else echo "FAIL: 3D 1#'s mastic not stiffened by its filler"; failures=$((failures + 1)); fi
   # At its defaults the command line runs the library's frozen 3D model
-  # (protocol/rutting/model3.hpp): the box of test_rutting3.cpp's "a short
-  # run of the frozen model" gives that test's pinned rut, to the bit (a
-  # regression pin: it changes with that one).
+  # (protocol/rutting/model3.hpp) at the 3D step's safety (0.5): the box of
+  # test_rutting3.cpp's "a short run of the frozen model" gives that test's
+  # pinned rut, to the bit (a regression pin: it changes with that one).
   expect "0" "3D: rut depth" -- --dim 3 --gradation 1 --width-mm 40 --sphere-radius-mm 2 --shift 1e6 --settle-steps 300 \
     --samples 24 --out model3
-  grep -qF '"rut_depth_mm": 3.5637703875242845,' "$work/model3/summary.json" ||
-    { echo "FAIL: the 3D defaults are not the library's frozen 3D model (pinned rut 3.5637703875242845)"; failures=$((failures + 1)); }
-  # The same model typed out, the filler's voids as .35: the same run, and it says it is the model.
+  grep -qF '"rut_depth_mm": 3.164063949845919,' "$work/model3/summary.json" ||
+    { echo "FAIL: the 3D defaults are not the library's frozen 3D model (pinned rut 3.1640639498459189)"; failures=$((failures + 1)); }
+  # The same model typed out, the filler's voids as .35 and the 3D step's
+  # safety as .5: the same run, and it says it is the model.
   expect "0" "3D: rut depth" -- --dim 3 --gradation 1 --width-mm 40 --sphere-radius-mm 2 --shift 1e6 --settle-steps 300 \
-    --samples 24 --stone-friction 0.6 --mastic-by-filler .35 --out model3_typed
+    --samples 24 --stone-friction 0.6 --mastic-by-filler .35 --timestep-safety .5 --out model3_typed
   cmp -s "$work/model3/deformation.csv" "$work/model3_typed/deformation.csv" ||
     { echo "FAIL: the 3D model typed out is not the same run as at the defaults"; failures=$((failures + 1)); }
   grep -qF '"calibrated": true,' "$work/model3_typed/summary.json" ||
     { echo "FAIL: the 3D model typed out (.35) is not said to be the model"; failures=$((failures + 1)); }
+  grep -qF '"timestep_safety": 0.5,' "$work/model3/summary.json" ||
+    { echo "FAIL: the 3D step's safety at its default is not 0.5 in summary.json"; failures=$((failures + 1)); }
   expect "0" "rut depth" -- "${small[@]}" --out run1
+  grep -qF '"timestep_safety": 0.3,' "$work/run1/summary.json" ||
+    { echo "FAIL: the 2D step's safety at its default is not 0.3 in summary.json"; failures=$((failures + 1)); }
   for f in summary.json deformation.csv deformation.png specimen.png rut_forming.png displacement.png final.vtk config.ini; do
     [[ -s "$work/run1/$f" ]] || { echo "FAIL: no $f"; failures=$((failures + 1)); }
   done

@@ -165,6 +165,17 @@ refused "a negative friction of version 0.1 (the mastic's 1) and -1 of 0.2 (the 
   'stone-friction=1 against stone-friction=0.6' "$work/m3-defaults" "$work/m3-version-0.1"
 refused "a run before the filler option (one mastic) and the 3D model" \
   'mastic-by-filler=none against mastic-by-filler=0.35' "$work/m3-defaults" "$work/m3-no-filler-0.6"
+# The time step's safety as each run resolved it: -1 is the dimension's
+# since 2026-12-06 (0.3 in 2D, 0.5 in 3D), recorded in summary.json
+# (timestep_safety); before, the default was 0.3, written out as such.
+resolved dt-3d-defaults 12 'timestep-safety=-1\n' '"timestep_safety": 0.5'
+resolved dt-3d-typed 13 'timestep-safety=.5\n' '"timestep_safety": 0.5'
+resolved dt-3d-before 14 'timestep-safety=0.3\n'
+resolved dt-resolved-0.3 15 'timestep-safety=-1\n' '"timestep_safety": 0.3'
+pools "the 3D step's safety at its default and typed out (.5)" "12 13" "$work/dt-3d-defaults" "$work/dt-3d-typed"
+pools "a step's safety of -1 that resolved to 0.3 (2D's) and 0.3 from before -1" "15 14" "$work/dt-resolved-0.3" "$work/dt-3d-before"
+refused "the 3D step at its default and a run from before (0.3 then)" \
+  'timestep-safety=0.3 against timestep-safety=0.5' "$work/dt-3d-defaults" "$work/dt-3d-before"
 if [ -n "$rutting" ]; then
   printed=$("$rutting" --width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300 --seeds 1-2 \
     --out "$work/ensemble" 2>&1 | grep "2 specimens: rut depth")

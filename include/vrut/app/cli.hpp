@@ -37,6 +37,22 @@ inline CLI::Validator finite_range(double lo, double hi, bool open_above = false
       "FLOAT in " + range);
 }
 
+// finite_range(lo, hi), or exactly `sentinel` (an option's "left to the
+// program", as -1).
+inline CLI::Validator finite_range_or(double sentinel, double lo, double hi) {
+  const CLI::Validator in_range = finite_range(lo, hi);
+  const std::string range = "[" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + "]";
+  const std::string either = CLI::detail::to_string(sentinel) + " or " + range;
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double v = 0.0;
+        if (CLI::detail::lexical_cast(text, v) && v == sentinel) return {};
+        std::string copy = text;
+        return in_range(copy).empty() ? std::string{} : "must be " + either + ", got " + text;
+      },
+      "FLOAT: " + either);
+}
+
 // Parses; returns -1 to go on, else the exit code: 0 after --help, 2 for a
 // malformed command line (CLI11's own codes are not 1 or 2).
 inline int parse(CLI::App& app, int argc, char** argv) {

@@ -98,6 +98,11 @@ inline void resolve_model_settings(std::map<std::string, std::string>& settings,
     settings["mastic-by-filler"] = summary->at("mastic_by_filler").get<std::string>();  // as typed, compared as a number
   else if (settings.count("mastic-by-filler") == 0)
     settings["mastic-by-filler"] = "none";
+  // The time step's safety: -1 is the dimension's since 2026-12-06 (0.3 in
+  // 2D, 0.5 in 3D), which summary.json records as resolved; before, the
+  // option's default was 0.3 in both, written out as such.
+  if (summary != nullptr && summary->contains("timestep_safety"))
+    settings["timestep-safety"] = summary->at("timestep_safety").dump();
 }
 
 // A single run's summary.json as a seeds.csv row: its one specimen.
@@ -210,8 +215,8 @@ inline std::vector<SeedRow> pool_runs(const std::vector<std::string>& given) {
       }
       if (!differences.empty())
         throw std::runtime_error(run.path + " and " + other.path +
-                                 " were run with other settings (their config.ini; the stones' friction and the filler "
-                                 "as each run resolved them): " +
+                                 " were run with other settings (their config.ini; the stones' friction, the filler "
+                                 "and the time step's safety as each run resolved them): " +
                                  differences + ": pool one mix's runs of one model");
     }
     for (const auto& row : run.rows) {

@@ -74,6 +74,7 @@ struct RunOptions {
     e1 = mat.mastic.E1 / 1e6, eta1 = mat.mastic.eta1 / 1e6, e2 = mat.mastic.E2 / 1e6, eta2 = mat.mastic.eta2 / 1e6;
     pressure_mpa = wt.pressure * 1e-6, wheel_width_mm = wt.wheel_width * 1e3, travel_mm = wt.travel * 1e3;
     aggregate_gpa = mat.aggregate_modulus * 1e-9;
+    num.timestep_safety = -1.0;  // the dimension's (resolve_model_options)
   }
   // The model in SI units, from the options as typed.
   void convert() {
@@ -132,9 +133,13 @@ inline double mastic_filler_scale(const std::string& text, const vrut::Gradation
 // The options left at "the model's" (--stone-friction -1, --mastic-by-filler
 // model) given the dimension's model: in 3D the fitted friction and the filler
 // at 0.35; in 2D one mastic, and a stone friction of -1 left for the library
-// to read as the mastic's (vrut::stone_friction_of). Before anything reads them.
+// to read as the mastic's (vrut::stone_friction_of). And the time step's
+// safety left at -1, the dimension's numerics: 0.3 in 2D (the library's
+// RuttingNumerics), vrut::timestep_safety_3d in 3D. Before anything reads them.
 inline void resolve_model_options(RunOptions& o) {
   const bool three = o.dim == 3;
+  if (o.num.timestep_safety < 0.0)
+    o.num.timestep_safety = three ? vrut::timestep_safety_3d : vrut::RuttingNumerics{}.timestep_safety;
   if (three && o.mat.stone_friction < 0.0) o.mat.stone_friction = stone_friction_3d;
   if (o.mastic_by_filler == "model") o.mastic_by_filler = three ? mastic_by_filler_3d : "none";
 }
@@ -268,8 +273,11 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--minutes", wt.minutes, "test duration (more than the DS window's start, 45)")
       ->check(cli::finite_positive())->capture_default_str()->group("Loading");
   app.add_option("--shift", num.shift, "time-temperature shift factor alpha_T")->capture_default_str()->group("Numerics");
-  app.add_option("--timestep-safety", num.timestep_safety, "fraction of the critical time step")
-      ->check(cli::finite_range(1e-3, 1.0))->capture_default_str()->group("Numerics");
+  app.add_option("--timestep-safety", num.timestep_safety,
+                 "fraction of sqrt(m / k), the stiffest spring on the lightest mass it meets (-1: the dimension's: " +
+                     CLI::detail::to_string(vrut::RuttingNumerics{}.timestep_safety) + " in 2D, " +
+                     CLI::detail::to_string(vrut::timestep_safety_3d) + " in 3D)")
+      ->check(cli::finite_range_or(-1.0, 1e-3, 1.0))->capture_default_str()->group("Numerics");
   app.add_option("--damping", num.damping, "local damping while loading")->check(cli::finite_range(0.0, 0.99))
       ->capture_default_str()->group("Numerics");
   app.add_option("--settle-steps", num.settle_steps, "steps of settling under gravity")
