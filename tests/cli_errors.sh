@@ -194,10 +194,13 @@ rutting)
   for option in --aggregate-nu --mastic-nu; do
     for value in -0.1 0.5 nan inf; do expect "2" "^$option: " -- "$option" "$value" --out bad; done
   done
-  # The step's safety: -1 (the dimension's) or in [0.001, 1]; no other negative.
-  for value in -0.5 -2 0 1.5 nan inf; do
-    expect "2" "^--timestep-safety: must be -1 or \\[0.001, 1\\], got" -- --timestep-safety "$value" --out bad
+  # The step's safety: -1 (the dimension's) or in [0.001, 2] (past 2 a spring
+  # alone is unstable); no other negative.
+  for value in -0.5 -2 0 2.5 nan inf; do
+    expect "2" "^--timestep-safety: must be -1 or \\[0.001, 2\\], got" -- --timestep-safety "$value" --out bad
   done
+  # The settling's steps: -1 (as long as 4,000 at 0.3) or a count; no other negative.
+  expect "2" "^--settle-steps: " -- --settle-steps -2 --out bad
   expect "2" "must last longer than minute 45" -- --minutes 30 --out bad
   expect "2" "retains nothing on the 2.36" -- --gradation no_stones.csv --out bad
   expect "2" "at least two sieves" -- --gradation one_sieve.csv --out bad
@@ -276,6 +279,15 @@ rutting)
   expect "0" "rut depth" -- "${small[@]}" --out run1
   grep -qF '"timestep_safety": 0.3,' "$work/run1/summary.json" ||
     { echo "FAIL: the 2D step's safety at its default is not 0.3 in summary.json"; failures=$((failures + 1)); }
+  # The settling left to its default lasts as long as 4,000 steps at the
+  # safety 0.3: 4,000 at 2D's 0.3, 4000 x 0.3 / 0.24 = 5,000 at 0.24.
+  small_settling=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5)
+  expect "0" "rut depth" -- "${small_settling[@]}" --out settle_default
+  grep -qF '"settle_steps": 4000,' "$work/settle_default/summary.json" ||
+    { echo "FAIL: the 2D settling at its default is not 4,000 steps in summary.json"; failures=$((failures + 1)); }
+  expect "0" "rut depth" -- "${small_settling[@]}" --timestep-safety 0.24 --out settle_small_step
+  grep -qF '"settle_steps": 5000,' "$work/settle_small_step/summary.json" ||
+    { echo "FAIL: the settling at the safety 0.24 is not 5,000 steps (as long as 4,000 at 0.3)"; failures=$((failures + 1)); }
   for f in summary.json deformation.csv deformation.png specimen.png rut_forming.png displacement.png final.vtk config.ini; do
     [[ -s "$work/run1/$f" ]] || { echo "FAIL: no $f"; failures=$((failures + 1)); }
   done

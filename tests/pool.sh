@@ -176,6 +176,17 @@ pools "the 3D step's safety at its default and typed out (.5)" "12 13" "$work/dt
 pools "a step's safety of -1 that resolved to 0.3 (2D's) and 0.3 from before -1" "15 14" "$work/dt-resolved-0.3" "$work/dt-3d-before"
 refused "the 3D step at its default and a run from before (0.3 then)" \
   'timestep-safety=0.3 against timestep-safety=0.5' "$work/dt-3d-defaults" "$work/dt-3d-before"
+# The settling's steps as each run resolved them: -1 lasts as long as 4,000
+# steps at 0.3 since 2026-12-06 (4,000 in 2D, 2,400 at 3D's 0.5), recorded
+# in summary.json (settle_steps); before, the default was 4,000, written out.
+resolved settle-3d-defaults 16 'settle-steps=-1\n' '"settle_steps": 2400'
+resolved settle-3d-typed 17 'settle-steps=2400\n' '"settle_steps": 2400'
+resolved settle-before 18 'settle-steps=4000\n'
+resolved settle-resolved-4000 19 'settle-steps=-1\n' '"settle_steps": 4000'
+pools "the settling at its default and typed out (2400)" "16 17" "$work/settle-3d-defaults" "$work/settle-3d-typed"
+pools "a settling of -1 that resolved to 4000 (2D's) and 4000 from before -1" "19 18" "$work/settle-resolved-4000" "$work/settle-before"
+refused "the settling at its 3D default and a run from before (4000 then)" \
+  'settle-steps=4000 against settle-steps=2400' "$work/settle-3d-defaults" "$work/settle-before"
 if [ -n "$rutting" ]; then
   printed=$("$rutting" --width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300 --seeds 1-2 \
     --out "$work/ensemble" 2>&1 | grep "2 specimens: rut depth")

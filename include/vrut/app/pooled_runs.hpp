@@ -103,6 +103,10 @@ inline void resolve_model_settings(std::map<std::string, std::string>& settings,
   // option's default was 0.3 in both, written out as such.
   if (summary != nullptr && summary->contains("timestep_safety"))
     settings["timestep-safety"] = summary->at("timestep_safety").dump();
+  // The settling's steps: -1 is as long as 4,000 steps at 0.3 since
+  // 2026-12-06 (4,000 at 0.3), which summary.json records as resolved.
+  if (summary != nullptr && summary->contains("settle_steps"))
+    settings["settle-steps"] = summary->at("settle_steps").dump();
 }
 
 // A single run's summary.json as a seeds.csv row: its one specimen.

@@ -216,6 +216,7 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   j["disk_radius_mm"] = sp.disks.radius;
   j["shift_factor"] = num.shift;
   j["timestep_safety"] = num.timestep_safety;  // as the dimension resolved it (resolve_model_options)
+  j["settle_steps"] = num.settle_steps;        // as resolved (resolve_model_options)
   j["conversion"] = conversion;
   j["particles"] = disks;
   j["rigid_stones"] = mat.rigid_stones;

@@ -269,6 +269,7 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   j["sphere_radius_mm"] = sp.spheres.radius;
   j["shift_factor"] = num.shift;
   j["timestep_safety"] = num.timestep_safety;  // as the dimension resolved it (resolve_model_options)
+  j["settle_steps"] = num.settle_steps;        // as resolved (resolve_model_options)
   j["conversion"] = "fcc_lattice";
   j["particles"] = all_spheres;
   j["mpi_ranks"] = session.size();

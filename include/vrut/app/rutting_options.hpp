@@ -75,6 +75,7 @@ struct RunOptions {
     pressure_mpa = wt.pressure * 1e-6, wheel_width_mm = wt.wheel_width * 1e3, travel_mm = wt.travel * 1e3;
     aggregate_gpa = mat.aggregate_modulus * 1e-9;
     num.timestep_safety = -1.0;  // the dimension's (resolve_model_options)
+    num.settle_steps = -1;       // as long as the method's 4,000 steps at 0.3 (resolve_model_options)
   }
   // The model in SI units, from the options as typed.
   void convert() {
@@ -135,11 +136,14 @@ inline double mastic_filler_scale(const std::string& text, const vrut::Gradation
 // at 0.35; in 2D one mastic, and a stone friction of -1 left for the library
 // to read as the mastic's (vrut::stone_friction_of). And the time step's
 // safety left at -1, the dimension's numerics: 0.3 in 2D (the library's
-// RuttingNumerics), vrut::timestep_safety_3d in 3D. Before anything reads them.
+// RuttingNumerics), vrut::timestep_safety_3d in 3D; and the settling's steps
+// left at -1, as long in time as the method's 4,000 at 0.3
+// (vrut::settle_steps_at_safety). Before anything reads them.
 inline void resolve_model_options(RunOptions& o) {
   const bool three = o.dim == 3;
   if (o.num.timestep_safety < 0.0)
     o.num.timestep_safety = three ? vrut::timestep_safety_3d : vrut::RuttingNumerics{}.timestep_safety;
+  if (o.num.settle_steps < 0) o.num.settle_steps = vrut::settle_steps_at_safety(o.num.timestep_safety);
   if (three && o.mat.stone_friction < 0.0) o.mat.stone_friction = stone_friction_3d;
   if (o.mastic_by_filler == "model") o.mastic_by_filler = three ? mastic_by_filler_3d : "none";
 }
@@ -277,11 +281,13 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
                  "fraction of sqrt(m / k), the stiffest spring on the lightest mass it meets (-1: the dimension's: " +
                      CLI::detail::to_string(vrut::RuttingNumerics{}.timestep_safety) + " in 2D, " +
                      CLI::detail::to_string(vrut::timestep_safety_3d) + " in 3D)")
-      ->check(cli::finite_range_or(-1.0, 1e-3, 1.0))->capture_default_str()->group("Numerics");
+      ->check(cli::finite_range_or(-1.0, 1e-3, 2.0))->capture_default_str()->group("Numerics");
   app.add_option("--damping", num.damping, "local damping while loading")->check(cli::finite_range(0.0, 0.99))
       ->capture_default_str()->group("Numerics");
-  app.add_option("--settle-steps", num.settle_steps, "steps of settling under gravity")
-      ->check(CLI::Range(0L, 100000000L))->capture_default_str()->group("Numerics");
+  app.add_option("--settle-steps", num.settle_steps,
+                 "steps of settling under gravity (-1: as long as 4,000 steps at the safety 0.3: 4,000 in 2D, "
+                 "fewer at a larger step)")
+      ->check(CLI::Range(-1L, 100000000L))->capture_default_str()->group("Numerics");
   app.add_option("--samples", num.samples, "points of the deformation curve")->check(CLI::Range(10, 100000))
       ->capture_default_str()->group("Numerics");
   app.add_option("--backend", o.backend, "Kokkos backend")->check(CLI::IsMember(vrut::available_backends()))
