@@ -13,7 +13,9 @@ interval from the window's mean (analysis/standard_ds.hpp).
   DIR holds the folders d3-1mm-m1-model-sN and d3-1mm-m3-model-sN
   (default: the current folder); -v prints each folder's row."""
 import json, csv, math, sys, glob, os
-T975 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306, 9: 2.262}
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from screening_table import t95  # the Student t quantiles the screening table uses
 
 PASSES = 15 * 42  # the DS window's passes
 # mix -> seed -> (deformation at 5, 15, 30, 45, 60 min in mm, DS as reported)
@@ -63,7 +65,7 @@ def pool(mix, folders, verbose):
     win = [data[s][1] for s in seeds]
     mean = sum(ruts) / n
     sd = math.sqrt(sum((r - mean) ** 2 for r in ruts) / (n - 1))
-    t = T975[n - 1]
+    t = t95(n - 1)
     h = t * sd / math.sqrt(n)
     means = [sum(data[s][0][k] for s in seeds) / n for k in range(5)]
     wm = sum(win) / n
