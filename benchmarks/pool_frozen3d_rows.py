@@ -2,10 +2,11 @@
 """The frozen 3D model's 1 mm specimens of 1# and 3#, pooled (issue 44;
 docs/validation.md, "The frozen 3D model").
 
-The folders of the specimens run before 2026-12-06's new machine are gone:
-those come from validation.md's rows below (the rut to 0.01 mm, each DS
-window as 630 passes over its DS); later ones from their folders'
-summary.json and deformation.csv. vrut-pool's formulas: the Student-t
+The folders of the specimens run before 2026-12-06's new machine are gone,
+so every specimen is kept here as its row of validation.md (the rut to
+0.01 mm, each DS window as 630 passes over its DS); a folder found in DIR
+replaces its seed's row with its summary.json and deformation.csv at full
+precision. vrut-pool's formulas: the Student-t
 interval of the mean rut, the DS's median, the mean curve's DS and its
 interval from the window's mean (analysis/standard_ds.hpp).
 
