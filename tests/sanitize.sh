@@ -28,37 +28,52 @@ export ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:exitcode=86
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:exitcode=86
 # Other libraries' allocations kept until exit by design (lsan.supp says which).
 export LSAN_OPTIONS=suppressions=$src/tests/lsan.supp:print_suppressions=0
-export VRUT_SANITIZED=1 OMP_NUM_THREADS=2 OMP_PROC_BIND=false
+export VRUT_SANITIZED=1 OMP_PROC_BIND=false
 failures=0
 log=$build/sanitize.log
 : >"$log"
-# One tag a run, each with --warn NoTests: a tag that matches nothing (a
-# renamed or misspelt one) fails instead of running nothing.
-# The pinned runs that are small enough here ([pinned][small]: the 2D
-# defaults' section, about a minute at -O0, and a short 3D run): the others
-# take 30 times their -O2 time under the sanitizers, many minutes each.
-# The physics tests on the OpenMP backend only (a template test's
-# "ExecutionSpaces - 0" is its Serial instance): the same kernels, and the
-# two bonded blocks' Serial instances alone took 74 of the 127 s here.
-for tag in "[unit]" "[input]" "[checkpoint]" "[instability]" "[physics]~*ExecutionSpaces - 0" "[pinned][small]"; do
-  "$build/tests/vrut-tests-sanitize" --warn NoTests "$tag" >>"$log" 2>&1 ||
-    { echo "FAIL: the $tag tests under the sanitizers (exit $?)"; failures=$((failures + 1)); }
-done
-# The bad-input tests, two programs at a time on one thread each: most of
-# their time is single-threaded work at -O0 (specimens, images), so two lanes
-# fill the two cores. Each program's output is kept apart, then appended.
-bad_input() {  # bad_input EXAMPLE: its checks into its own log; the exit code is theirs
-  OMP_NUM_THREADS=1 VRUT_ERRORS_ONLY=1 "$src/tests/cli_errors.sh" "$1" "$build/examples/vrut-$1" >"$build/bad_input_$1.log" 2>&1
+# The checks, each a job with its own log, run two at a time on one thread
+# each (xargs -P 2 hands the next job to the first lane free, the longest
+# first): most of them are single-threaded work at -O0, and on two threads
+# the OpenMP ones spent a third of their time in spin barriers, so two lanes
+# of one thread fill the two cores: 104 s here on 2026-12-06, against 174 s
+# one job at a time on two threads (the pinned runs 53 s of that, most of it
+# the 2D defaults' whole section, now a short run of them). The threads'
+# interplay is checked by the main build's Serial-against-OpenMP tests, bit
+# for bit.
+#  - One Catch2 tag a job, each with --warn NoTests: a tag that matches
+#    nothing (a renamed or misspelt one) fails instead of running nothing.
+#    The pinned runs short enough here ([pinned][small]: short runs of the
+#    2D defaults and of a 3D box, about 30 s together): the others take 30
+#    times their -O2 time under the sanitizers, a minute to many each. The
+#    physics tests on the OpenMP backend only (a template test's
+#    "ExecutionSpaces - 0" is its Serial instance): the same kernels, and the
+#    two bonded blocks' Serial instances alone took 74 of the 127 s here.
+#  - The bad-input tests of each program (cli_errors.sh).
+tags=("[physics]~*ExecutionSpaces - 0" "[pinned][small]" "[checkpoint]" "[instability]" "[unit]" "[input]")
+programs=(specimen rutting creep demo)
+run_job() {  # run_job tag N | run_job program NAME: the job's output into its own log, its exit code
+  if [[ $1 == tag ]]; then
+    "$build/tests/vrut-tests-sanitize" --warn NoTests "${tags[$2]}" >"$build/job_tag_$2.log" 2>&1 ||
+      { local code=$?; echo "FAIL: the ${tags[$2]} tests under the sanitizers (exit $code)"; return 1; }
+  else
+    VRUT_ERRORS_ONLY=1 "$src/tests/cli_errors.sh" "$2" "$build/examples/vrut-$2" >"$build/job_program_$2.log" 2>&1 ||
+      { echo "FAIL: $2's bad-input tests under the sanitizers"; return 1; }
+  fi
 }
-lane() { local code=0; for example in "$@"; do bad_input "$example" || { echo "$example"; code=1; }; done; return $code; }
-lane specimen demo >"$build/lane_a.failed" & lane_a=$!
-lane rutting creep >"$build/lane_b.failed"; code_b=$?
-wait "$lane_a"; code_a=$?
-for example in demo creep specimen rutting; do cat "$build/bad_input_$example.log" >>"$log"; done
-for example in $(cat "$build/lane_a.failed" "$build/lane_b.failed"); do
-  echo "FAIL: $example's bad-input tests under the sanitizers"; failures=$((failures + 1))
-done
-[[ $code_a -eq 0 && $code_b -eq 0 ]] || [[ $failures -gt 0 ]] || { echo "FAIL: a bad-input lane"; failures=$((failures + 1)); }
+export -f run_job
+export src build
+# Longest first (times at -O0 on one thread): the physics about 55 s, the
+# pinned runs and the specimen program's checks 30 s, the checkpoints 25 s.
+jobs=("tag 0" "tag 1" "tag 2" "program specimen" "tag 3" "program rutting" "tag 4" "program creep" "program demo" "tag 5")
+# Each job's FAIL line on stdout; xargs exits 123 when any job failed.
+failed=$(printf '%s\n' "${jobs[@]}" |
+  OMP_NUM_THREADS=1 xargs -P 2 -I JOB bash -c "$(declare -p tags); run_job JOB")
+code=$?
+for i in "${!tags[@]}"; do cat "$build/job_tag_$i.log" >>"$log"; done
+for p in "${programs[@]}"; do cat "$build/job_program_$p.log" >>"$log"; done
+if [[ -n $failed ]]; then echo "$failed"; failures=$((failures + $(grep -c . <<<"$failed"))); fi
+[[ $code -eq 0 ]] || [[ $failures -gt 0 ]] || { echo "FAIL: the jobs' runner (xargs exit $code)"; failures=$((failures + 1)); }
 if grep -qE "ERROR: (Address|Leak)Sanitizer|runtime error:" "$log"; then
   echo "FAIL: sanitizer reports:"; grep -E -A 12 "ERROR: (Address|Leak)Sanitizer|runtime error:" "$log" | head -n 60
   failures=$((failures + 1))
