@@ -63,6 +63,7 @@ run_job() {  # run_job tag N | run_job program NAME: the job's output into its o
 }
 export -f run_job
 export src build
+rm -f "$build"/job_*.log  # a job that does not run leaves no log of an earlier run behind
 # Longest first (times at -O0 on one thread): the physics about 55 s, the
 # pinned runs and the specimen program's checks 30 s, the checkpoints 25 s.
 jobs=("tag 0" "tag 1" "tag 2" "program specimen" "tag 3" "program rutting" "tag 4" "program creep" "program demo" "tag 5")
