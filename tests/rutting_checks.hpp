@@ -1,6 +1,7 @@
 #pragma once
 // Every number a rutting run reports, compared bit for bit: the curve, the
-// snapshots, the final velocities and groups, and every scalar of the result
+// snapshots, the final velocities and groups, the skeleton's record (films
+// and load paths), the time step's report, and every scalar of the result
 // but the wall time.
 #include <vrut/protocol/rutting.hpp>
 
@@ -30,6 +31,26 @@ constexpr double pinned_small_rut_mm = 7.2958540768346163;  // renewed 2026-12-0
 
 // Equal bits (so NaN equals NaN, where == would not).
 inline bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+inline void require_same(const vrut::LoadPath& a, const vrut::LoadPath& b) {
+  REQUIRE(same_bits(a.minutes, b.minutes));
+  REQUIRE(same_bits(a.stone_spring, b.stone_spring));
+  REQUIRE(same_bits(a.stone_film, b.stone_film));
+  REQUIRE(same_bits(a.mastic, b.mastic));
+}
+
+inline void require_same(const vrut::SkeletonRecord& a, const vrut::SkeletonRecord& b) {
+  REQUIRE(a.films_start.contacts == b.films_start.contacts);
+  REQUIRE(a.films_start.bearing == b.films_start.bearing);
+  REQUIRE(a.films_end.contacts == b.films_end.contacts);
+  REQUIRE(a.films_end.bearing == b.films_end.bearing);
+  {
+    INFO("the load path at minute " << vrut::SkeletonRecord::early_minute);
+    require_same(a.load_early, b.load_early);
+  }
+  INFO("the load path at the end");
+  require_same(a.load_end, b.load_end);
+}
 
 inline void require_same(const vrut::RuttingResult& a, const vrut::RuttingResult& b) {
   REQUIRE(a.samples.size() == b.samples.size());
@@ -67,6 +88,11 @@ inline void require_same(const vrut::RuttingResult& a, const vrut::RuttingResult
   REQUIRE(a.dynamic_stability_is_lower_bound == b.dynamic_stability_is_lower_bound);
   REQUIRE(a.stones == b.stones);
   REQUIRE(a.stone_pairs_touching == b.stone_pairs_touching);
+  require_same(a.skeleton, b.skeleton);
+  REQUIRE(a.time_step.set_by == b.time_step.set_by);
+  REQUIRE(a.time_step.next == b.time_step.next);
+  REQUIRE(same_bits(a.time_step.step, b.time_step.step));
+  REQUIRE(same_bits(a.time_step.next_step, b.time_step.next_step));
 }
 
 // A regression pin: what a run gave when its model was frozen, renewed only
