@@ -7,6 +7,8 @@
 #    the specimens settle (the run says it stops when the loading begins);
 #  - a 3D ensemble killed and resumed the same way, on the stones its
 #    checkpoint kept (not placed again);
+#  - each resume takes the test up where its checkpoint left it: its first
+#    sample lies past 0, and past a stopped run's last (not started over);
 #  - a damaged checkpoint, and options given beside --resume, are refused.
 # Usage: checkpoint_resume.sh VRUT_RUTTING
 set -u
@@ -26,6 +28,16 @@ wait_for() {  # wait_for FILE [PATTERN]
     sleep 0.05
   done
   return 1
+}
+# A resume, told from a run started over (runs are deterministic, so the
+# results alone cannot tell them apart): the resumed run's first sample lies
+# past minute AFTER (0, or the minutes a stopped run had done).
+resumed_past() {  # resumed_past OUTPUT_FILE AFTER
+  local minute
+  minute=$(sed -n 's/^resumed: minute \([0-9.]*\) of .*/\1/p' "$1" | head -n 1)
+  if [[ -z $minute ]]; then fail "$1: no 'resumed: minute' line"; return; fi
+  if awk -v m="$minute" -v a="$2" 'BEGIN { exit !(m > a) }'; then echo "ok:   $1 took up the test at minute $minute (after $2)"
+  else fail "$1: its first sample at minute $minute, not after $2: started over?"; fi
 }
 # The results, less what depends on the clock or the thread count.
 same_results() {  # same_results DIR_A DIR_B
@@ -55,6 +67,7 @@ wait "$pid" 2>/dev/null
 [[ -s killed/checkpoint.vrut && ! -e killed/summary.json ]] || fail "after SIGKILL: $(ls killed)"
 "$exe" --resume killed >resumed.out 2>&1 || fail "--resume after SIGKILL failed: $(tail -n 3 resumed.out)"
 grep -q "resuming from" resumed.out || fail "the resumed run does not say it resumes"
+resumed_past resumed.out 0
 same_results whole killed
 [[ -e killed/checkpoint.vrut ]] && fail "a finished run left its checkpoint behind"
 
@@ -83,6 +96,7 @@ kill -KILL "$pid"
 wait "$pid" 2>/dev/null
 [[ -s killed3/checkpoint.vrut && ! -e killed3/summary.json ]] || fail "3D, after SIGKILL: $(ls killed3)"
 "$exe" --resume killed3 --threads 1 >resumed3.out 2>&1 || fail "--resume of the 3D ensemble failed: $(tail -n 3 resumed3.out)"
+resumed_past resumed3.out 0
 same_results whole3 killed3
 # ... on the stones the checkpoint kept, not placed again.
 [[ $(grep -c "the stones placed when the run began, from the checkpoint" resumed3.out) -eq 2 ]] ||
@@ -102,7 +116,10 @@ ctrl_c_and_resume() {  # ctrl_c_and_resume DIR WHOLE_DIR PROGRESS_PATTERN ARGS..
   grep -q "go on with: .*--resume $dir" "$dir.out" || fail "$dir: Ctrl-C does not say how to resume: $(cat "$dir.out")"
   grep -q '"interrupted": true' "$dir/summary.json" 2>/dev/null || fail "$dir: no partial summary.json"
   [[ -s $dir/checkpoint.vrut ]] || fail "$dir: Ctrl-C left no checkpoint"
+  local done_minutes
+  done_minutes=$(sed -n 's/.*"minutes_done": \([0-9.e+-]*\).*/\1/p' "$dir/summary.json")
   "$exe" --resume "$dir" --threads 1 >"$dir.resumed.out" 2>&1 || fail "--resume $dir failed: $(tail -n 3 "$dir.resumed.out")"
+  if [[ -n $done_minutes ]]; then resumed_past "$dir.resumed.out" "$done_minutes"; else fail "$dir: no minutes_done"; fi
   same_results "$whole_dir" "$dir"
 }
 ctrl_c_and_resume stopped whole "loading.*[1-9]0 *%" "${small[@]}"

@@ -61,7 +61,10 @@ vrut::RuttingResult run_short(const std::function<bool()>& stop, vrut::Checkpoin
 
 TEMPLATE_LIST_TEST_CASE("a run stopped with a checkpoint and resumed ends bit for bit as the run never stopped",
                         "[checkpoint]", vrut_test::ExecutionSpaces) {
-  const auto whole = run_short<TestType>({}, nullptr);
+  // The run asks whether to stop once at each sample: counted, they tell a
+  // resume (the samples after the checkpoint's) from a run started over.
+  int asked_whole = 0;
+  const auto whole = run_short<TestType>([&] { return ++asked_whole < 0; }, nullptr);
 
   const vrut_test::ScratchDir scratch("vrut-test-checkpoint");
   const auto path = scratch / "stopped.vrut";
@@ -73,8 +76,11 @@ TEMPLATE_LIST_TEST_CASE("a run stopped with a checkpoint and resumed ends bit fo
 
   auto again = vrut::CheckpointFile::resume(path, 0.0);
   CHECK(again.header().at("run") == "stopped at sample 7");
-  const auto resumed = run_short<TestType>({}, &again);
+  int asked_resumed = 0;
+  const auto resumed = run_short<TestType>([&] { return ++asked_resumed < 0; }, &again);
   CHECK_FALSE(resumed.interrupted);
+  CHECK(asked_whole > 7);
+  CHECK(asked_resumed == asked_whole - 7);
   vrut_test::require_same(resumed, whole);
 }
 

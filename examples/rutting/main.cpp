@@ -44,10 +44,16 @@ int main(int argc, char** argv) {
     const std::string checkpoint_name = ranks::checkpoint_name(session.rank(), session.size());
     if (!resume.empty()) {
       const fs::path file = fs::path(resume) / checkpoint_name;
-      if (!fs::exists(file))
+      if (!fs::exists(file)) {
+        // A run of another rank count: say how to go on with it.
+        if (const int ranks_then = ranks::checkpoint_ranks_in(resume); ranks_then > 0)
+          throw std::invalid_argument(resume + " holds the checkpoints of a run on " + std::to_string(ranks_then) +
+                                      " rank(s), and this is " + std::to_string(session.size()) +
+                                      ": go on with it as " + ranks::resume_command(ranks_then, resume));
         throw std::invalid_argument("no checkpoint in " + resume + " (" + file.string() +
                                     "): a run writes one on Ctrl-C, or every --checkpoint-every seconds" +
                                     (session.size() > 1 ? "; resume with as many ranks as the run had" : ""));
+      }
       checkpoint = vrut::CheckpointFile::resume(file, given.checkpoint_every);
       o = options_to_resume(app, given, *checkpoint);
       checkpoint->set_interval(o.checkpoint_every);

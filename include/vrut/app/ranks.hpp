@@ -4,6 +4,7 @@
 // write one summary. Each specimen's result does not depend on which others
 // run beside it, so K ranks give the results of one process, bit for bit.
 // Built without MPI (VRUT_WITH_MPI unset) there is one rank and nothing to share.
+#include <vrut/io/output_dir.hpp>
 #include <vrut/protocol/rutting.hpp>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -112,6 +114,40 @@ inline std::vector<std::uint64_t> seeds_of_rank(const std::vector<std::uint64_t>
 inline std::string checkpoint_name(int rank, int size) {
   return size == 1 ? "checkpoint.vrut"
                    : "checkpoint-rank-" + std::to_string(rank) + "-of-" + std::to_string(size) + ".vrut";
+}
+
+// How many ranks wrote the checkpoints in `folder`: 1 for checkpoint.vrut,
+// K for checkpoint-rank-0-of-K.vrut; 0 where it holds neither.
+inline int checkpoint_ranks_in(const std::filesystem::path& folder) {
+  std::error_code ignored;
+  if (std::filesystem::exists(folder / checkpoint_name(0, 1), ignored)) return 1;
+  const std::string prefix = "checkpoint-rank-0-of-", suffix = ".vrut";
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ignored)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() > prefix.size() + suffix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+      if (digits.find_first_not_of("0123456789") == std::string::npos && digits.size() < 6) return std::stoi(digits);
+    }
+  }
+  return 0;
+}
+
+// A stopped run's checkpoints, every rank's, go into its output folder's
+// staging copy beside the partial results (rank 0 calls this once every rank
+// has written its own: the gather that precedes it waits for them all), so
+// that the folder which replaces the old one holds what a resume needs.
+inline void keep_checkpoints(const std::filesystem::path& out, const vrut::OutputDir& output, int size) {
+  for (int r = 0; r < size; ++r) {
+    const std::string name = checkpoint_name(r, size);
+    std::filesystem::rename(out / name, output.file(name));
+  }
+}
+
+// How to go on with a stopped run: the command, with the launcher that ran
+// its ranks (a resume needs as many).
+inline std::string resume_command(int size, const std::string& out) {
+  return (size > 1 ? "mpirun -np " + std::to_string(size) + " " : std::string()) + "vrut-rutting --resume " + out;
 }
 
 // What rank 0 needs of a specimen run elsewhere: its result less the

@@ -11,6 +11,7 @@
 #include "rutting_outputs.hpp"
 #include "rutting_report.hpp"
 #include "seeds.hpp"
+#include "loading_bar.hpp"
 #include "settling_bar.hpp"
 #include "skeleton_report.hpp"
 #include "specimen_cli.hpp"
@@ -147,9 +148,9 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   if (hooks.start_runtime) hooks.start_runtime(o.threads);
   else kokkos.emplace(o.threads);
   int used_threads = 1;
-  // Reported in permille of the test; read as minutes of the test a second.
-  vrut::ProgressBar bar(ensemble ? "loading " + cli::specimens_text(seeds.size()) : "loading", 1000,
-                        {"test min", wt.minutes / 1000.0}, session.root() ? stderr : nullptr);
+  // In minutes of the test a second; a resumed run says where it took up the test.
+  vrut::app::LoadingBar bar(ensemble, seeds.size(), wt.minutes, checkpoint != nullptr && checkpoint->resuming(),
+                             session.root() ? stderr : nullptr);
   std::optional<CatchStopSignals> catching(std::in_place);
   if (checkpoint != nullptr && checkpoint->resuming())
     std::fprintf(stderr, "resuming from %s\n", checkpoint->path().c_str());
@@ -161,7 +162,7 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
       return vrut::run_rutting_ensemble(
           specimens, wt, mat, num, space,
           [&](double fraction, long) {
-            bar.update(static_cast<long>(1000 * fraction));
+            bar.update(fraction);
             if (hooks.progress) hooks.progress(fraction);
           },
           // Every rank stops at the same sample, so the curves stay the same length.
@@ -244,22 +245,15 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
     output->write_text("summary.json", j.dump(2) + '\n');
     // The checkpoint of a stopped run goes with its partial results; a run
     // that ended needs none.
-    if (interrupted && checkpoint != nullptr)
-      for (int r = 0; r < session.size(); ++r) {
-        const std::string name = ranks::checkpoint_name(r, session.size());
-        fs::rename(fs::path(out) / name, output->file(name));
-      }
+    if (interrupted && checkpoint != nullptr) ranks::keep_checkpoints(out, *output, session.size());
     output->commit();
   }
   outcome.runs = std::move(runs);
   outcome.report = report;
   if (interrupted) {
-    if (hooks.print && !out.empty()) {
-      const std::string launcher = session.size() > 1 ? "mpirun -np " + std::to_string(session.size()) + " " : "";
-      std::printf("partial results (%.1f of %.0f minutes, no dynamic stability) in %s\n"
-                  "go on with: %svrut-rutting --resume %s\n",
-                  minutes_done, wt.minutes, out.c_str(), launcher.c_str(), out.c_str());
-    }
+    if (hooks.print && !out.empty())
+      std::printf("partial results (%.1f of %.0f minutes, no dynamic stability) in %s\ngo on with: %s\n", minutes_done,
+                  wt.minutes, out.c_str(), ranks::resume_command(session.size(), out).c_str());
     return outcome;
   }
   if (hooks.print) {

@@ -12,6 +12,7 @@
 #include "rutting_outcome.hpp"
 #include "rutting_outputs.hpp"
 #include "rutting_report.hpp"
+#include "loading_bar.hpp"
 #include "settling_bar.hpp"
 #include "stop_signal.hpp"
 
@@ -189,9 +190,9 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
                  wt.patch ? wt.wheel_width * 1e3 : sp.depth,
                  wt.loading_time(), wt.loading_time() / num.shift);
   int used_threads = 1;
-  // Reported in permille of the test; read as minutes of the test a second.
-  vrut::ProgressBar bar(ensemble ? "loading " + cli::specimens_text(seeds.size()) : "loading", 1000,
-                        {"test min", wt.minutes / 1000.0}, screen);
+  // In minutes of the test a second; a resumed run says where it took up the test.
+  vrut::app::LoadingBar bar(ensemble, seeds.size(), wt.minutes, checkpoint != nullptr && checkpoint->resuming(),
+                             screen);
   if (checkpoint != nullptr && checkpoint->resuming())
     std::fprintf(stderr, "resuming from %s\n", checkpoint->path().c_str());
   std::vector<vrut::RuttingResult3> runs3;
@@ -204,7 +205,7 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
         return vrut::run_rutting_ensemble3(
             specimens, wt, mat, num, space,
             [&](double fraction, long) {
-              bar.update(static_cast<long>(1000 * fraction));
+              bar.update(fraction);
               if (hooks.progress) hooks.progress(fraction);
             },
             // Every rank stops at the same sample, so the curves stay the same length.
@@ -299,9 +300,8 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   j["skeleton"] = skeleton_summary_json(runs);
   if (output) {
     output->write_text("summary.json", j.dump(2) + '\n');
-    // The checkpoint of a stopped run goes with its partial results.
-    if (interrupted && checkpoint != nullptr)
-      fs::rename(checkpoint->path(), output->file(checkpoint->path().filename().string()));
+    // Every rank's checkpoint of a stopped run goes with its partial results.
+    if (interrupted && checkpoint != nullptr) ranks::keep_checkpoints(o.out, *output, session.size());
     output->commit();
   }
   outcome.runs = std::move(runs);
@@ -312,9 +312,8 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   if (interrupted) {
     outcome.exit_code = 128 + static_cast<int>(stop_signal);
     if (hooks.print && output)
-      std::printf("partial results (%.1f of %.0f minutes, no dynamic stability) in %s\n"
-                  "go on with: vrut-rutting --resume %s\n",
-                  minutes_done, wt.minutes, o.out.c_str(), o.out.c_str());
+      std::printf("partial results (%.1f of %.0f minutes, no dynamic stability) in %s\ngo on with: %s\n", minutes_done,
+                  wt.minutes, o.out.c_str(), ranks::resume_command(session.size(), o.out).c_str());
     return outcome;
   }
   if (hooks.print) {
