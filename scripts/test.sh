@@ -31,7 +31,7 @@ if [[ -n $skipped ]]; then
   echo "Why they were skipped:"
   while read -r name; do
     reason=$(awk -v name="$name" '/^[0-9]+\/[0-9]+ Testing: / { current = substr($0, index($0, ": ") + 2) }
-                                  current == name && /^SKIPPED: / { print; exit }' Testing/Temporary/LastTest.log)
+                                  current == name && /^[[:space:]]*SKIPPED: / { sub(/^[[:space:]]*/, ""); print; exit }' Testing/Temporary/LastTest.log)
     echo "  $name: ${reason:-(no SKIPPED: line in its output; see Testing/Temporary/LastTest.log)}"
   done <<<"$skipped"
 fi

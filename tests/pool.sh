@@ -106,10 +106,11 @@ refused() {  # refused NAME PATTERN ARGS...
 # summary.json writes null, a lower bound; pooled, not refused.
 single s2-flat 2 12 0 200
 sed -i 's/"dynamic_stability_passes_per_mm": 200, "dynamic_stability_is_lower_bound": false/"dynamic_stability_passes_per_mm": null, "dynamic_stability_is_lower_bound": true/' "$work/s2-flat/summary.json"
-if "$exe" "$work/s1" "$work/s2-flat" "$work/s3" 2>&1 | grep -qF "(interval not known: 1 of 3 are lower bounds)"; then
+flat_out=$("$exe" "$work/s1" "$work/s2-flat" "$work/s3" 2>&1); flat_code=$?
+if [ "$flat_code" -eq 0 ] && grep -qF "(interval not known: 1 of 3 are lower bounds)" <<<"$flat_out"; then
   echo "ok:   a single run's infinite DS (null in summary.json) pools as a lower bound"
 else
-  echo "FAIL: a single run's infinite DS:"; "$exe" "$work/s1" "$work/s2-flat" "$work/s3"; failures=$((failures + 1))
+  echo "FAIL: a single run's infinite DS (exit $flat_code):"; echo "$flat_out"; failures=$((failures + 1))
 fi
 refused "a seed in two runs" "seed 3 is in .*all.csv and in .*again.csv" "$work/all.csv" "$work/again.csv"
 refused "a run stopped before its end" "seed 4 was stopped before its end" "$work/a.csv" "$work/stopped.csv"
@@ -188,9 +189,14 @@ pools "a settling of -1 that resolved to 4000 (2D's) and 4000 from before -1" "1
 refused "the settling at its 3D default and a run from before (4000 then)" \
   'settle-steps=4000 against settle-steps=2400' "$work/settle-3d-defaults" "$work/settle-before"
 if [ -n "$rutting" ]; then
-  printed=$("$rutting" --width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300 --seeds 1-2 \
-    --out "$work/ensemble" 2>&1 | grep "2 specimens: rut depth")
-  pooled=$("$exe" "$work/ensemble/seeds.csv" 2>&1)
+  # Each program's output first, then what is read of it: a pipe would lose
+  # the program's exit code.
+  ran=$("$rutting" --width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300 --seeds 1-2 \
+    --out "$work/ensemble" 2>&1); ran_code=$?
+  [ "$ran_code" -eq 0 ] || { echo "FAIL: the ensemble run exited $ran_code: $(tail -n 3 <<<"$ran")"; failures=$((failures + 1)); }
+  printed=$(grep "2 specimens: rut depth" <<<"$ran")
+  pooled=$("$exe" "$work/ensemble/seeds.csv" 2>&1); pooled_code=$?
+  [ "$pooled_code" -eq 0 ] || { echo "FAIL: pooling the ensemble exited $pooled_code"; failures=$((failures + 1)); }
   # The ensemble's "rut depth M mm at 60 min (sd S, 95 % CI L to H)", its DS
   # median, and the standard's mean curve with its interval, in vrut-pool's words.
   want_pooled=$(sed -E 's/.*rut depth ([0-9.]+) mm at [0-9]+ min \(sd ([0-9.]+), 95 % CI ([-0-9.]+) to ([-0-9.]+)\).*, median ([0-9]+), of the mean curve.*of the mean curve ([0-9]+) \(95 % interval ([0-9]+) to ([>0-9 ]+)\) passes.*/\1 (95 % interval \3 to \4), sd \2|median \5|of the mean curve \6 (95 % interval \7 to \8)/' <<<"$printed")
@@ -209,11 +215,14 @@ if [ -n "$rutting" ]; then
   # ensemble's two ruts (seeds.csv) and the one the single run printed (to
   # 0.01 mm, so 0.0017 in the mean), against vrut-pool's mean (to 0.01 mm):
   # within 0.007 mm when summary.json carries the run's rut.
-  single_rut=$("$rutting" --width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300 --seed 3 \
-    --out "$work/single3" 2>&1 | sed -nE 's/.*: rut depth ([0-9.]+) mm at 60 min.*/\1/p')
+  ran=$("$rutting" --width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300 --seed 3 \
+    --out "$work/single3" 2>&1); ran_code=$?
+  [ "$ran_code" -eq 0 ] || { echo "FAIL: the single run exited $ran_code: $(tail -n 3 <<<"$ran")"; failures=$((failures + 1)); }
+  single_rut=$(sed -nE 's/.*: rut depth ([0-9.]+) mm at 60 min.*/\1/p' <<<"$ran")
   two=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "rut_depth_mm") c = i } NR > 1 { s += $c } END { print s }' \
     "$work/ensemble/seeds.csv")
-  pooled3=$("$exe" "$work/ensemble" "$work/single3" 2>&1)
+  pooled3=$("$exe" "$work/ensemble" "$work/single3" 2>&1); pooled_code=$?
+  [ "$pooled_code" -eq 0 ] || { echo "FAIL: pooling the ensemble with the single run exited $pooled_code"; failures=$((failures + 1)); }
   mean3=$(sed -nE 's/^rut depth, mm: ([0-9.]+) .*/\1/p' <<<"$pooled3")
   if [ -n "$single_rut" ] && grep -qF "specimens: 3 (seeds 1 2 3)" <<<"$pooled3" &&
      awk -v a="$mean3" -v t="$two" -v r="$single_rut" 'BEGIN { d = a - (t + r) / 3; exit !(d < 0.007 && d > -0.007) }'; then
