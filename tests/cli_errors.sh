@@ -98,7 +98,7 @@ creep)
 specimen)
   printf 'sieve_mm,percent_passing\n19,100\n9.5,70\n12,40\n' >"$work/bad.csv"
   expect "1 2" "bad.csv:4" -- --gradation bad.csv --out a
-  expect "1 2" "cannot open" -- --gradation 7 --out b
+  expect "1 2" "neither a built-in mix \\(1, 2 or 3\\) nor a readable CSV file" -- --gradation 7 --out b
   expect "1 2" "disk-radius" -- --disk-radius-mm -0.5 --out c
   expect "1 2" "air-voids" -- --air-voids 0.5 --out d
   expect "1 2" "height" -- --height-mm -50 --out e
@@ -162,7 +162,7 @@ specimen)
   ;;
 rutting)
   small=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 1e5 --settle-steps 300)
-  expect "1 2" "cannot open" -- --gradation 7 --out a
+  expect "1 2" "neither a built-in mix \\(1, 2 or 3\\) nor a readable CSV file" -- --gradation 7 --out a
   expect "1 2" "pressure" -- --pressure-mpa -0.7 --out b
   expect "1 2" "longer than the specimen" -- --width-mm 20 --out c
   if [[ -n ${VRUT_NO_IMAGES:-} ]]; then  # built with VRUT_IMAGES=OFF: an image is refused with the reason
@@ -186,6 +186,20 @@ rutting)
   for d in a b c d e f g h; do
     [[ -e "$work/$d" ]] && { echo "FAIL: output folder $d written after an error"; failures=$((failures + 1)); }
   done
+  # The default folder (no --out) is replaced by the next run, so the main
+  # job runs twice; a folder named with --out is not, nor the default one
+  # while it holds an unfinished run's checkpoint.
+  if [[ -z ${VRUT_ERRORS_ONLY:-} ]]; then
+    expect "0" "rut depth" -- "${small[@]}" --seed 1
+    expect "0" "rut depth" -- "${small[@]}" --seed 2
+    grep -q '"seed": 2' "$work/out/rutting/summary.json" ||
+      { echo "FAIL: the second run did not replace the default folder's results"; failures=$((failures + 1)); }
+    expect "2" "exists and is not empty \(use --force" -- "${small[@]}" --out out/rutting
+    touch "$work/out/rutting/checkpoint.vrut"
+    expect "2" "holds the checkpoint of an unfinished run: go on with it with vrut-rutting --resume out/rutting" -- \
+      "${small[@]}"
+    rm -rf "$work/out"
+  fi
   # Negative, zero, NaN and infinite values: exit 2, the option named, no folder.
   for option in --E1 --eta1 --E2 --eta2 --aggregate-modulus-gpa --wheel-mass-kg --travel-mm --passes-per-minute \
                 --minutes; do

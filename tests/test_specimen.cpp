@@ -302,7 +302,7 @@ TEST_CASE("gradation files are checked line by line", "[specimen][input]") {
   CHECK_THROWS_WITH(vrut::read_gradation_csv(write("sieve_mm,percent_passing\n")), Catch::Contains("no sieve lines"));
   CHECK_THROWS_WITH(vrut::read_gradation_csv(write("")), Catch::Contains("no sieve lines"));
   CHECK_THROWS_WITH(vrut::read_gradation_csv("no/such/file.csv"), Catch::Contains("cannot open"));
-  CHECK_THROWS_WITH(vrut::gradation_from_name("4"), Catch::Contains("cannot open"));
+  CHECK_THROWS_WITH(vrut::gradation_from_name("4"), Catch::Contains("neither a built-in mix (1, 2 or 3) nor a readable CSV file"));
 }
 
 // A gradation that passes everything at 2.36 mm has no stones: the rutting

@@ -60,9 +60,16 @@ int main(int argc, char** argv) {
       o.out = resume;
       config_text = checkpoint->header().at("config_with_help").get<std::string>();
     } else {
-      if (fs::exists(fs::path(given.out) / checkpoint_name) && !given.force)
+      // An unfinished run's checkpoint, of this rank count or another, is never overwritten unasked.
+      if (const int ranks_then = ranks::checkpoint_ranks_in(given.out); ranks_then > 0 && !given.force)
         throw std::invalid_argument("'" + given.out + "' holds the checkpoint of an unfinished run: go on with it "
-                                    "with --resume " + given.out + ", or start again with --force");
+                                    "with " + ranks::resume_command(ranks_then, given.out) +
+                                    ", or start again with --force");
+      // The default folder, where no --out was named (on the command line or
+      // in a config file), holds the last run's results: a new run replaces
+      // them, so that the main job runs again as it is. A folder the user
+      // named is refused unless --force (OutputDir).
+      if (app.count("--out") == 0) o.force = true;
       nlohmann::json header;
       header["argv"] = std::vector<std::string>(argv + 1, argv + argc);
       header["config"] = app.config_to_str(true, false);

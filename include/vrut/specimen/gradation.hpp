@@ -107,9 +107,14 @@ inline Gradation read_gradation_csv(const std::string& path) {
   return parse_gradation_csv(in, path);
 }
 
-// "1", "2", "3" or a file name.
+// "1", "2", "3" or a file name. A name that is neither says both, so that
+// "7" reads as no such mix rather than only as a missing file.
 inline Gradation gradation_from_name(const std::string& name) {
   if (name == "1" || name == "2" || name == "3") return builtin_gradation(std::stoi(name));
+  if (!std::ifstream(name))
+    throw std::invalid_argument("gradation '" + name +
+                                "' is neither a built-in mix (1, 2 or 3) nor a readable CSV file "
+                                "(lines 'sieve_mm,percent_passing')");
   return read_gradation_csv(name);
 }
 
