@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The plot of docs/validation.md's round three: rut depth against the coarse
-# fraction (mass retained on 2.36 mm: 1# 52 %, 2# 66 %, 3# 80 %, SPEC.md
+# fraction (mass retained on 2.36 mm: 1# 52 %, 2# 66 %, 3# 80 %, docs/method.md
 # section 2), one line per candidate with its 95 % intervals, and the
 # laboratory's 2# (12.2 mm). It reads the candidates from the table that
 # follows the line "<!-- gradation plot table -->" in the markdown file,

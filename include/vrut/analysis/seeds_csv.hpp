@@ -17,7 +17,7 @@
 namespace vrut {
 
 // The result columns every seeds.csv has after the specimen's facts, in
-// order. The writer (examples/rutting/report.hpp) writes exactly these.
+// order. The writer (include/vrut/app/rutting_report.hpp) writes exactly these.
 inline constexpr const char* seeds_csv_result_columns =
     "rut_depth_mm,deformation_45min_mm,deformation_60min_mm,dynamic_stability_passes_per_mm,"
     "dynamic_stability_is_lower_bound,deformation_resolution_mm,stones,stone_pairs_touching,steps,"

@@ -1,7 +1,7 @@
 #pragma once
 // The filler's stiffening of the binder, by mix: part of the frozen 3D
 // model since 2026-12-06 (protocol/rutting/model3.hpp), not of the 2D
-// model; screened as a candidate of issue 44 (docs/validation.md, round
+// model; screened as a candidate (docs/validation.md, round
 // four, "A mastic by mix").
 //
 // The method gives every mix one mastic. At one binder content a mix with

@@ -1,5 +1,5 @@
 #pragma once
-// The rutting test's 3D setup (driver.hpp; SPEC.md section 10): a 3D
+// The rutting test's 3D setup (driver.hpp; docs/specimen.md): a 3D
 // specimen (specimen/specimen3.hpp) in a mould of a floor and two end plates,
 // periodic along its depth, loaded by a plate of the contact length l, as
 // deep as the specimen, carrying p l depth as a dead load. The same test

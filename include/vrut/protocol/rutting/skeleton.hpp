@@ -1,5 +1,5 @@
 #pragma once
-// What holds a rutting specimen up (issue 44's diagnostics), in 2D and 3D:
+// What holds a rutting specimen up (the skeleton's diagnostics), in 2D and 3D:
 //   - the load path: the vertical force that crosses a horizontal cut (the
 //     runs put it half way between the floor and the plate), under the
 //     plate, by the class of contact

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Links that cannot rot: every relative link in README.md, CHANGELOG.md and
+# docs/ names a file that exists, and so does every repository path cited in
+# those pages and in the comments of include/ (a path under docs/, tests/,
+# examples/, scripts/, benchmarks/, python/, cmake/ or include/, or one
+# under include/vrut/ written as its folder and name, protocol/rutting/box.hpp
+# say). No page or comment cites SPEC.md, which users do not have, or an
+# issue by its number, which they cannot follow.
+#   Usage: doc_links.sh SOURCE_DIR
+#          doc_links.sh --self-test SOURCE_DIR  (shows that it fails on a broken link of each kind)
+set -uo pipefail
+if [[ ${1:-} == --self-test ]]; then
+  src=${2:?usage: doc_links.sh --self-test SOURCE_DIR}
+  me=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/$(basename "${BASH_SOURCE[0]}")
+  tree=$(mktemp -d)
+  trap 'rm -rf "$tree"' EXIT
+  mkdir -p "$tree/docs" "$tree/include/vrut/core" "$tree/tests"
+  printf '# t\nSee [the guide](docs/guide.md#start) and `include/vrut/core/sim.hpp`.\n' >"$tree/README.md"
+  printf '# guide\nBack to [the readme](../README.md); `core/sim.hpp`.\n' >"$tree/docs/guide.md"
+  printf '#pragma once\n// As docs/guide.md says.\n' >"$tree/include/vrut/core/sim.hpp"
+  "$me" "$tree" >"$tree/clean.out" || { echo "FAIL: a clean tree fails: $(cat "$tree/clean.out")"; exit 1; }
+  failures=0
+  for bad in 'README.md|[gone](docs/gone.md)' 'docs/guide.md|`tests/gone.sh`' 'include/vrut/core/sim.hpp|// see docs/gone.md' \
+             'docs/guide.md|`core/gone.hpp`' 'README.md|as SPEC.md says' 'docs/guide.md|(issue 44)'; do
+    file=${bad%%|*} line=${bad#*|}
+    cp "$tree/$file" "$tree/keep"
+    printf '%s\n' "$line" >>"$tree/$file"
+    if "$me" "$tree" >"$tree/bad.out"; then echo "FAIL: '$line' in $file passes"; failures=$((failures + 1))
+    elif ! grep -q "^FAIL: $file:" "$tree/bad.out"; then echo "FAIL: '$line' in $file not named: $(cat "$tree/bad.out")"; failures=$((failures + 1))
+    else echo "ok:   '$line' in $file fails: $(head -n 1 "$tree/bad.out")"; fi
+    mv "$tree/keep" "$tree/$file"
+  done
+  exit $((failures > 0))
+fi
+root=${1:?usage: doc_links.sh SOURCE_DIR}
+cd "$root" || exit 1
+bad=0 checked=0
+fail() { echo "FAIL: $*"; bad=1; }
+pages=$(ls README.md CHANGELOG.md 2>/dev/null; find docs -name '*.md' 2>/dev/null | sort)
+headers=$(find include -name '*.hpp' 2>/dev/null | sort)
+repo_path='(docs|tests|examples|scripts|benchmarks|python|cmake|include)/[A-Za-z0-9_./-]*[A-Za-z0-9_]'
+# A path cited in FILE (line LINE) exists from the root, or from include/vrut/.
+check_path() {  # check_path FILE LINE PATH
+  local p=${3%/}
+  p=${p%.}
+  checked=$((checked + 1))
+  [[ -e $p || -e include/vrut/$p ]] || fail "$1:$2: '$3' does not exist"
+}
+for page in $pages; do
+  dir=$(dirname "$page")
+  # Markdown links [text](target): relative ones, less their #anchor.
+  while IFS=: read -r n target; do
+    target=${target%%#*}
+    [[ -z $target || $target == *://* || $target == mailto:* ]] && continue
+    checked=$((checked + 1))
+    [[ -e $dir/$target ]] || fail "$page:$n: link to '$target' ($dir/$target does not exist)"
+  done < <(grep -noE '\]\([^) ]+\)' "$page" | sed -E 's/^([0-9]+):\]\(([^) ]+)\)$/\1:\2/')
+  # Paths in code spans: `include/vrut/core/simulation.hpp`, `protocol/rutting/box.hpp`.
+  while IFS=: read -r n path; do check_path "$page" "$n" "$path"
+  done < <(grep -noE '`[A-Za-z0-9_./-]+/[A-Za-z0-9_.-]+\.(hpp|cpp|sh|py|md|cmake|txt|csv)`' "$page" | tr -d '`')
+done
+for header in $headers; do
+  while IFS=: read -r n path; do check_path "$header" "$n" "$path"
+  done < <(grep -nE '^\s*//' "$header" | grep -oE "^[0-9]+:|$repo_path\.(hpp|cpp|sh|py|md)" |
+           awk '/:$/ { n = $0; next } { print n $0 }')
+done
+for file in $pages $headers; do
+  grep -nE 'SPEC\.md' "$file" | while IFS=: read -r n _; do echo "FAIL: $file:$n: cites SPEC.md, which users do not have"; done
+  grep -niE '\b(issue|issues) #?[0-9]+' "$file" | while IFS=: read -r n _; do echo "FAIL: $file:$n: cites an issue by its number"; done
+done | tee /tmp/doc_links.$$ | head -n 200
+[[ -s /tmp/doc_links.$$ ]] && bad=1
+rm -f /tmp/doc_links.$$
+((checked > 0)) || fail "no link or path found to check"
+((bad == 0)) && echo "PASS: $checked links and paths in $(wc -w <<<"$pages") pages and $(wc -w <<<"$headers") headers, all there"
+exit $bad
