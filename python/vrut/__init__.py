@@ -19,6 +19,7 @@ import tempfile
 from . import _vrut
 
 __version__ = _vrut.version
+__license__ = "BSD-3-Clause"  # LICENSE at the repository's root; docs/licence.md says why it fits the dependencies
 __all__ = ["rutting", "specimen", "creep", "options", "Gradation", "Materials", "RuttingRun", "Specimen", "CreepRun",
            "backends"]
 
