@@ -3,7 +3,7 @@
 // the test, and for a resumed run the minute at which it took the test up
 // again (its first sample after the checkpoint), so that a person, or a
 // test, can tell a resume from a run started over.
-#include "cli.hpp"
+#include "seeds.hpp"
 
 #include <vrut/io/progress.hpp>
 
