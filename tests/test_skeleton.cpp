@@ -8,6 +8,8 @@
 //   B: four stone disks meeting through films 0.4 diameters thick, far
 //      thicker than their weight squeezes: 2 m_s g on the film alone;
 //   C: four mastic disks: 2 m_m g through mastic.
+// And again with A's stone of three free disks (the method's exact stone)
+// and C's disks bonded across gaps, not touching.
 // m_s, m_m: a stone's and a mastic disk's mass, density times pi r^2 t.
 #include "spaces.hpp"
 
@@ -32,7 +34,12 @@ struct Columns {
   double m_stone = 0.0, m_mastic = 0.0;
 };
 
-Columns three_columns() {
+// exact_and_bonded: column A's upper stone three free disks of one stone
+// meeting bare (the method's exact stone, whose contacts within the stone
+// are listed, not a rigid body's), and column C's mastic disks stacked with
+// a gap of gap_r radii, held across it by the mastic's bonds.
+constexpr double gap_r = 0.02;
+Columns three_columns(bool exact_and_bonded = false) {
   Columns c;
   vrut::RuttingMaterials m;
   // The mastic's viscosities a million times over: in the run's 0.1 s its
@@ -52,6 +59,7 @@ Columns three_columns() {
   c.table.set_all(vrut::RuttingLaw::make_first(vrut::film_params(mastic)));
   c.table.set(1, 2, film(0.0));
   c.table.set(3, 4, film(0.4 * 2.0 * r));
+  if (exact_and_bonded) c.table.set(2, 2, vrut::RuttingLaw::make_second(stone));
   const double pi = std::acos(-1.0);
   c.m_stone = m.aggregate_density * pi * r * r * t;
   c.m_mastic = m.mastic_density * pi * r * r * t;
@@ -59,9 +67,10 @@ Columns three_columns() {
   // contacts the first particle (the list's i) is the upper one.
   for (int k = 0; k < 4; ++k) {
     const double y = (2 * k + 1) * r;
-    c.set.add(10e-3, y, r, m.aggregate_density, k == 0 ? 1 : 2, k == 0 ? -1 : 0);  // A: disks 2-4 one body
+    const int body = k == 0 || exact_and_bonded ? -1 : 0;
+    c.set.add(10e-3, y, r, m.aggregate_density, k == 0 ? 1 : 2, body);  // A: disks 2-4 one stone
     c.stone.push_back(k == 0 ? 0 : 1);
-    c.set.add(30e-3, y, r, m.mastic_density, vrut::mastic_group);                    // C
+    c.set.add(30e-3, exact_and_bonded ? y + 2.0 * gap_r * r * k : y, r, m.mastic_density, vrut::mastic_group);  // C
     c.stone.push_back(-1);
   }
   for (int k = 3; k >= 0; --k) {
@@ -128,6 +137,33 @@ TEMPLATE_LIST_TEST_CASE("the load path across a cut: three columns at rest, work
   CHECK(c_only.load.stone_spring == 0.0);
   CHECK(c_only.load.stone_film == 0.0);
   CHECK(c_only.load.mastic == Approx(2.0 * c.m_mastic * g).epsilon(1e-8));
+}
+
+// The same columns with an exact stone in A and a bonded mastic column in C
+// whose disks never touch: the load path counts a bonded contact across its
+// gap (C's weight crosses the cut through one), and a stone's contacts
+// within itself are no stone pair (the census holds A's one pair, not three).
+TEST_CASE("the load path across a cut: a bonded mastic gap and an exact stone, worked by hand", "[physics][skeleton]") {
+  using Space = Kokkos::DefaultHostExecutionSpace;
+  Columns c = three_columns(true);
+  vrut::SimulationSettings settings;
+  settings.thickness = t;
+  settings.gravity = {0.0, -g};
+  vrut::CentralDifference::params_type settle;
+  settle.damping = 0.7;
+  vrut::Simulation<vrut::RuttingLaw, Space, vrut::CentralDifference, vrut::LoadControl, vrut::RuttingWallLaw> sim(
+      c.set, c.table, settings, settle, Space());
+  // C's disks (every other one of the first eight), each bonded to the next across its gap.
+  REQUIRE(sim.bond_pairs({{1, 3}, {3, 5}, {5, 7}}) == 3);
+  sim.add_wall(vrut::Wall{{0.0, 0.0}, {40e-3, 0.0}, {}}, vrut::rutting_wall_params(vrut::RuttingMaterials{}, t), {}, 0);
+  sim.run(40000, 0.3 * sim.critical_timestep());
+
+  const vrut::SkeletonSnapshot all = vrut::skeleton_snapshot(sim, c.table, 0, cut_across_columns(), c.stone);
+  check_columns_weights(all, c);
+  CHECK(all.films.total_contacts() == 4);
+  // The gaps held: C's weight crossed the cut where no disks touch.
+  auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sim.particles().position);
+  CHECK(x(5).y - x(3).y > 2.0 * r * (1.0 + 0.5 * gap_r));
 }
 
 TEST_CASE("a contact's class: mastic, stones on their film, stones on their spring", "[unit][skeleton]") {
