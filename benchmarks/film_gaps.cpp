@@ -1,4 +1,4 @@
-// The mastic that 1 mm disks cannot show (docs/validation.md, the film
+// The mastic that 1 mm disks cannot show (docs/studies/2026-11-23-gradation-sensitivity.md, the film
 // between stones). A disk belongs to a stone when its centre lies inside the
 // stone's outline, so where two disks are neighbours the true outlines lie
 // somewhere on the segment between their centres. Along that segment this

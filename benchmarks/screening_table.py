@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The fidelity study's screening table (docs/validation.md, round four).
+"""The fidelity study's screening table (docs/studies/2026-12-04-fidelity-round-four.md).
 
 Reads the seeds.csv of runs named PREFIX-mM-ROW (a folder ROW/seeds.csv, or a
 file PREFIX-mM-ROW.seeds.csv as the device script leaves them) and prints,

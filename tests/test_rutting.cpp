@@ -156,7 +156,7 @@ TEST_CASE("the models frozen before give the numbers pinned for them", "[rutting
 // not the masses, so it is exact only while inertia is negligible. Without
 // local damping (the default) the first minutes of the curve must not depend
 // on alpha_T up to 1e4. Here (60 x 30 mm) they differ by 3.7 % at worst with
-// rigid stones (2.9 % with the method's), the residual inertia of this small section (validation.md: 0.1 % at 5 minutes on
+// rigid stones (2.9 % with the method's), the residual inertia of this small section (docs/studies/2026-11-23-time-shift.md: 0.1 % at 5 minutes on
 // 100 mm); with local damping 0.3 the same comparison differs by 44 %.
 TEST_CASE("without local damping alpha_T 1e3 and 1e4 give the same early curve", "[rutting][shift]") {
   const vrut::Specimen sp = small_specimen();

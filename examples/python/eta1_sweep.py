@@ -9,7 +9,7 @@ import sys
 
 import vrut
 
-ETA1_MPA_S = (60.0, 83.34, 110.0)  # 83.34: the calibrated mastic (docs/validation.md)
+ETA1_MPA_S = (60.0, 83.34, 110.0)  # 83.34: the source's mastic, the default (docs/method.md)
 SEEDS = [1, 2, 3]
 
 

@@ -67,8 +67,8 @@ struct RuttingMaterials {
   bool films() const { return stone_film != StoneFilm::none; }
   bool film_per_contact() const { return stone_film == StoneFilm::per_contact; }
   // The thinnest film two stones meet through, m (0: none, the frozen
-  // model): a candidate of the fidelity study (docs/validation.md, "No
-  // stone pair bears bare"), not adopted unless that section says so. With
+  // model): a candidate of the fidelity study (docs/validation.md,
+  // "Candidates"), not adopted unless that table says so. With
   // the film per contact every pair of stones' particles meets through at
   // least this much binder, so the stones' spring engages only past it: two
   // coated stones touch through two binder films (specimen/binder_film.hpp

@@ -1,8 +1,7 @@
 #pragma once
 // The filler's stiffening of the binder, by mix: part of the frozen 3D
 // model since 2026-12-06 (protocol/rutting/model3.hpp), not of the 2D
-// model; screened as a candidate (docs/validation.md, round
-// four, "A mastic by mix").
+// model; screened as a candidate (docs/studies/2026-12-05-mastic-by-mix.md).
 //
 // The method gives every mix one mastic. At one binder content a mix with
 // more filler (passing 0.075 mm) has a stiffer mastic: the filler is a
