@@ -39,10 +39,15 @@ def test_materials_are_the_options_they_hold():
     given = vrut.rutting(gradation=2, materials=soft, **SMALL)
     one_by_one = vrut.rutting(gradation=2, eta1=60.0, stone_friction=0.3, **SMALL)
     assert numpy.array_equal(given.deformation_mm, one_by_one.deformation_mm)
-    # An option given beside them wins.
-    beside = vrut.rutting(gradation=2, materials=soft, eta1=83.34, stone_friction=0.3, **SMALL)
-    default = vrut.rutting(gradation=2, stone_friction=0.3, **SMALL)
-    assert numpy.array_equal(beside.deformation_mm, default.deformation_mm)
+    # An option given beside them wins, and the materials' others still hold:
+    # the stones' friction comes from `soft` alone, so a module that dropped
+    # the materials when given another option would run at the default
+    # friction, which gives another curve.
+    beside = vrut.rutting(gradation=2, materials=soft, eta1=83.34, **SMALL)
+    friction_only = vrut.rutting(gradation=2, stone_friction=0.3, **SMALL)
+    assert numpy.array_equal(beside.deformation_mm, friction_only.deformation_mm)
+    default = vrut.rutting(gradation=2, **SMALL)
+    assert not numpy.array_equal(default.deformation_mm, friction_only.deformation_mm)
 
 
 def test_materials_are_checked_when_made():

@@ -83,8 +83,14 @@ def test_an_ensemble_equals_its_single_runs():
         assert both.per_seed[k]["rut_depth_mm"] == alone.rut_depth_mm
     # The mean curve is the specimens' mean, sample by sample.
     assert numpy.allclose(both.deformation_mm, both.curves_mm.mean(axis=0), rtol=1e-15, atol=0)
+    # The 95 % interval of the mean at each sample, worked here: Student's t
+    # for one degree of freedom, 12.7062047 (tables), times the sample
+    # standard deviation over sqrt(2).
     low, high = both.ci95_mm
-    assert numpy.all(low <= both.deformation_mm) and numpy.all(both.deformation_mm <= high)
+    half = 12.706204736174707 * both.curves_mm.std(axis=0, ddof=1) / numpy.sqrt(2.0)
+    assert numpy.allclose(low, both.deformation_mm - half, rtol=1e-9, atol=1e-12)
+    assert numpy.allclose(high, both.deformation_mm + half, rtol=1e-9, atol=1e-12)
+    assert numpy.all(half[1:] > 0.0)  # two specimens, two curves
 
 
 @pytest.mark.parametrize("kwargs, args", [
