@@ -3,8 +3,9 @@
 #  - a run killed with SIGKILL between checkpoints, resumed with --resume,
 #    ends with the results of the run never stopped, bit for bit;
 #  - Ctrl-C leaves a valid checkpoint beside valid partial results, and
-#    resuming that gives the same results again, also when it comes while
-#    the specimens settle (the run says it stops when the loading begins);
+#    resuming that gives the same results again; so does a scheduler's
+#    SIGTERM (exit 143) while the specimens settle (the run says it stops
+#    when the loading begins);
 #  - a 3D ensemble killed and resumed the same way, on the stones its
 #    checkpoint kept (not placed again);
 #  - each resume takes the test up where its checkpoint left it: its first
@@ -105,14 +106,17 @@ same_results whole3 killed3
 
 # Ctrl-C: partial results and a checkpoint, and how to go on; resumed (on
 # one thread), the run ends as one never stopped.
-ctrl_c_and_resume() {  # ctrl_c_and_resume DIR WHOLE_DIR PROGRESS_PATTERN ARGS...
-  local dir=$1 whole_dir=$2 pattern=$3 pid code; shift 3
+# SIGNAL=TERM (a scheduler's) instead of Ctrl-C: exit 143 and the same partial results.
+ctrl_c_and_resume() {  # [SIGNAL=TERM] ctrl_c_and_resume DIR WHOLE_DIR PROGRESS_PATTERN ARGS...
+  local dir=$1 whole_dir=$2 pattern=$3 pid code signal=${SIGNAL:-INT}; shift 3
+  local want=130
+  [[ $signal == TERM ]] && want=143
   "$exe" "$@" --out "$dir" >"$dir.out" 2>"$dir.err" &
   pid=$!
   wait_for "$dir.err" "$pattern" || fail "$dir: no progress within 60 s"
-  kill -INT "$pid"
+  kill "-$signal" "$pid"
   wait "$pid"; code=$?
-  [[ $code -eq 130 ]] || fail "$dir: Ctrl-C gave exit $code, not 130"
+  [[ $code -eq $want ]] || fail "$dir: SIG$signal gave exit $code, not $want"
   grep -q "go on with: .*--resume $dir" "$dir.out" || fail "$dir: Ctrl-C does not say how to resume: $(cat "$dir.out")"
   grep -q '"interrupted": true' "$dir/summary.json" 2>/dev/null || fail "$dir: no partial summary.json"
   [[ -s $dir/checkpoint.vrut ]] || fail "$dir: Ctrl-C left no checkpoint"
@@ -124,13 +128,15 @@ ctrl_c_and_resume() {  # ctrl_c_and_resume DIR WHOLE_DIR PROGRESS_PATTERN ARGS..
 }
 ctrl_c_and_resume stopped whole "loading.*[1-9]0 *%" "${small[@]}"
 
-# Ctrl-C while settling: the run says it stops at the loading's first
-# sample, does so with a checkpoint, and the resumed run ends as one never
-# stopped. (A longer settling, so that the signal comes while it lasts.)
+# A scheduler's SIGTERM while settling: the run says it stops at the
+# loading's first sample, does so with a checkpoint (exit 143), and the
+# resumed run ends as one never stopped. (A longer settling, so that the
+# signal comes while it lasts; the settling's path is the same for Ctrl-C.)
 long_settle=(--width-mm 60 --height-mm 30 --disk-radius-mm 1 --shift 4e3 --settle-steps 60000)
 "$exe" "${long_settle[@]}" --out settled_whole >settled_whole.out 2>&1 || fail "the long-settling run failed"
-ctrl_c_and_resume settling settled_whole "settling.*[1-9]0 *%" "${long_settle[@]}"
-grep -q "Ctrl-C while settling" settling.err || fail "Ctrl-C while settling is not told: $(tail -n 3 settling.err)"
+SIGNAL=TERM ctrl_c_and_resume settling settled_whole "settling.*[1-9]0 *%" "${long_settle[@]}"
+grep -q "SIGTERM while settling" settling.err || fail "SIGTERM while settling is not told: $(tail -n 3 settling.err)"
+grep -q "terminated (SIGTERM)" settling.err || fail "SIGTERM is not told as such: $(tail -n 3 settling.err)"
 
 # Refusals: with exit 2 and a message, and the checkpoint left as it was.
 check_refused() {  # check_refused PATTERN ARGS...
