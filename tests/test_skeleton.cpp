@@ -21,6 +21,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace {
@@ -105,22 +106,33 @@ void check_columns_weights(const vrut::SkeletonSnapshot& all, const Columns& c) 
   CHECK(all.films.bearing[2] == 0);
 }
 
+template <class Space>
+using ColumnsSimulation =
+    vrut::Simulation<vrut::RuttingLaw, Space, vrut::CentralDifference, vrut::LoadControl, vrut::RuttingWallLaw>;
+
+// The columns on the floor under gravity, damped so that they come to rest
+// as they run.
+template <class Space>
+std::unique_ptr<ColumnsSimulation<Space>> columns_on_floor(const Columns& c) {
+  vrut::SimulationSettings settings;
+  settings.thickness = t;
+  settings.gravity = {0.0, -g};
+  vrut::CentralDifference::params_type settle;
+  settle.damping = 0.7;
+  auto sim = std::make_unique<ColumnsSimulation<Space>>(c.set, c.table, settings, settle, Space());
+  sim->add_wall(vrut::Wall{{0.0, 0.0}, {40e-3, 0.0}, {}}, vrut::rutting_wall_params(vrut::RuttingMaterials{}, t), {}, 0);
+  return sim;
+}
+
 }  // namespace
 
 TEMPLATE_LIST_TEST_CASE("the load path across a cut: three columns at rest, worked by hand", "[physics][skeleton]",
                         vrut_test::ExecutionSpaces) {
   using Space = TestType;
   Columns c = three_columns();
-  vrut::SimulationSettings settings;
-  settings.thickness = t;
-  settings.gravity = {0.0, -g};
-  vrut::CentralDifference::params_type settle;
-  settle.damping = 0.7;
-  vrut::Simulation<vrut::RuttingLaw, Space, vrut::CentralDifference, vrut::LoadControl, vrut::RuttingWallLaw> sim(
-      c.set, c.table, settings, settle, Space());
-  sim.add_wall(vrut::Wall{{0.0, 0.0}, {40e-3, 0.0}, {}}, vrut::rutting_wall_params(vrut::RuttingMaterials{}, t), {}, 0);
-  const double dt = 0.3 * sim.critical_timestep();
-  sim.run(40000, dt);
+  auto sim_on_floor = columns_on_floor<Space>(c);
+  auto& sim = *sim_on_floor;
+  sim.run(40000, 0.3 * sim.critical_timestep());
 
   vrut::SkeletonCut cut = cut_across_columns();
   const vrut::SkeletonSnapshot all = vrut::skeleton_snapshot(sim, c.table, 0, cut, c.stone);
@@ -146,16 +158,10 @@ TEMPLATE_LIST_TEST_CASE("the load path across a cut: three columns at rest, work
 TEST_CASE("the load path across a cut: a bonded mastic gap and an exact stone, worked by hand", "[physics][skeleton]") {
   using Space = Kokkos::DefaultHostExecutionSpace;
   Columns c = three_columns(true);
-  vrut::SimulationSettings settings;
-  settings.thickness = t;
-  settings.gravity = {0.0, -g};
-  vrut::CentralDifference::params_type settle;
-  settle.damping = 0.7;
-  vrut::Simulation<vrut::RuttingLaw, Space, vrut::CentralDifference, vrut::LoadControl, vrut::RuttingWallLaw> sim(
-      c.set, c.table, settings, settle, Space());
+  auto sim_on_floor = columns_on_floor<Space>(c);
+  auto& sim = *sim_on_floor;
   // C's disks (every other one of the first eight), each bonded to the next across its gap.
   REQUIRE(sim.bond_pairs({{1, 3}, {3, 5}, {5, 7}}) == 3);
-  sim.add_wall(vrut::Wall{{0.0, 0.0}, {40e-3, 0.0}, {}}, vrut::rutting_wall_params(vrut::RuttingMaterials{}, t), {}, 0);
   sim.run(40000, 0.3 * sim.critical_timestep());
 
   const vrut::SkeletonSnapshot all = vrut::skeleton_snapshot(sim, c.table, 0, cut_across_columns(), c.stone);
