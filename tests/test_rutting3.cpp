@@ -322,6 +322,53 @@ TEST_CASE("3D: a short run under a patch plate holds the wheel's pressure", "[ru
   CHECK(sum / count == Approx(0.7e6).epsilon(0.02));
 }
 
+// The strip across the travel (WheelTracking::transverse), worked by hand:
+// the plate is the wheel's width d = 50 mm along the box's span, centred,
+// and endless along the periodic depth, which now runs along the travel,
+// so it carries p d times the box's depth D and covers all of that depth.
+// Beside it, a short run (as the patch's, below its reasons) holds 0.7 MPa
+// over d D: the strip across the depth, l long, would read p d / l, 1.6
+// times as much, from the same force.
+TEST_CASE("3D: the strip across the travel is the wheel's width, along the whole periodic depth", "[rutting3][transverse]") {
+  vrut::SpecimenSettings3 s = vrut_test::small_box3(1, 1, 80.0);
+  s.sphere_radius = 2.0;
+  const std::vector<vrut::Specimen3> specimens{vrut::generate_specimen3(s)};
+  const double depth = specimens[0].depth * 1e-3, width = 0.080;
+  vrut::WheelTracking wt;
+  wt.transverse = true;
+  const vrut::RuttingMaterials m = materials3();
+  vrut::RuttingNumerics n = numerics3();
+  const vrut::BoxSetup strip(specimens, wt, m, n);
+  CHECK(strip.plate_load(1.0, 0.25).target_force == Approx(0.7e6 * 0.05 * depth).epsilon(1e-12));
+  CHECK(strip.plate_area() == Approx(0.05 * depth).epsilon(1e-12));
+  const vrut::Wall3 plate = strip.plate(0, 0.05);
+  CHECK(plate.centre.x == Approx(0.5 * width).epsilon(1e-12));
+  CHECK(plate.half_u.x == Approx(0.025).epsilon(1e-12));
+  CHECK(plate.half_v.z > 10.0 * depth);  // endless along the travel: a sphere's unwrapped path stays under it
+  CHECK(strip.settings.box.periodic[2]);
+  for (const double z : {-depth, 0.0, 0.5 * depth, depth, 2.0 * depth}) CHECK(strip.plate_band().contains(z));
+  const vrut::WheelTracking model_wheel;  // its own: a BoxSetup keeps a reference to its WheelTracking
+  const vrut::BoxSetup along(specimens, model_wheel, m, n);  // the model's strip, l long
+  CHECK(strip.plate_mass(1e6, 1e-6, 0) ==
+        Approx(along.plate_mass(1e6, 1e-6, 0) * 0.05 / model_wheel.contact_length()).epsilon(1e-12));
+
+  vrut::WheelTracking both = wt;
+  both.patch = true;
+  CHECK_THROWS_WITH(vrut::BoxSetup(specimens, both, m, n), Catch::Contains("not both"));
+  const std::vector<vrut::Specimen3> narrow{vrut::generate_specimen3(vrut_test::small_box3(1, 1, 40.0))};
+  CHECK_THROWS_WITH(vrut::BoxSetup(narrow, wt, m, n), Catch::Contains("longer than the specimen"));
+
+  n.samples = 24;
+  const vrut::RuttingResult3 run = vrut::run_rutting3<Kokkos::DefaultHostExecutionSpace>(specimens[0], wt, m, n);
+  CHECK(run.result.deformation_final > 1e-3);
+  double sum = 0.0;
+  int count = 0;
+  for (const auto& sample : run.result.samples)
+    if (sample.minutes > 5.0) sum += sample.plate_pressure, ++count;
+  REQUIRE(count > 0);
+  CHECK(sum / count == Approx(0.7e6).epsilon(0.02));
+}
+
 // As in 2D ("a disk outside its mould stops the run, saying where"): a
 // sphere that leaves its mould through a wall, or far over the top, stops
 // the run as unstable, naming the sphere, its three coordinates and the

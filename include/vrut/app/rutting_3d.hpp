@@ -87,10 +87,9 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   if (o.so.disk_radius_mm != defaults.so.disk_radius_mm) only_2d("--disk-radius-mm");
   if (o.so.placement != defaults.so.placement) only_2d("--placement");
   if (o.so.binder_film_mm != defaults.so.binder_film_mm) only_2d("--binder-film-mm");
-  if (o.section != RunOptions().section)  // wt.transverse is set by convert(), below
-    throw std::invalid_argument("--section transverse is for 2D sections; the 3D plate already spans the wheel's "
-                                "contact length along the travel and the box's depth across it (or the wheel's "
-                                "width, with --plate patch)");
+  if (o.section == "transverse" && o.plate == "patch")
+    throw std::invalid_argument("--section transverse and --plate patch are two plates: the strip across the "
+                                "travel (the wheel's width, the depth along the travel) or the tyre's patch");
   if (o.mat.mastic_aggregate_factor != defaults.mat.mastic_aggregate_factor)
     throw std::invalid_argument("--mastic-aggregate-factor is the 2D model's (fitted on 2# with the films between "
                                 "stones); in 3D give --mastic-aggregate-factor-3d");
@@ -186,7 +185,7 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
                  ensemble ? "s" : "", ss.gradation.name.c_str(), sp.width, sp.height, sp.depth, all_spheres,
                  session.size() > 1 ? (" on rank 0 of " + std::to_string(session.size())).c_str()
                                     : (ensemble ? " in all" : ""),
-                 sp.placement.stones.size(), ensemble ? " in the first" : "", wt.contact_length() * 1e3,
+                 sp.placement.stones.size(), ensemble ? " in the first" : "", wt.plate_length() * 1e3,
                  wt.patch ? wt.wheel_width * 1e3 : sp.depth,
                  wt.loading_time(), wt.loading_time() / num.shift);
   int used_threads = 1;
@@ -291,7 +290,8 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   j["threads"] = used_threads;
   j["particle_steps_per_second"] = speed;
   j["contact_length_mm"] = wt.contact_length() * 1e3;
-  j["plate_mm"] = {wt.contact_length() * 1e3, wt.patch ? wt.wheel_width * 1e3 : sp.depth};
+  j["section"] = wt.transverse ? "transverse" : "longitudinal";  // transverse: the strip across the travel
+  j["plate_mm"] = {wt.plate_length() * 1e3, wt.patch ? wt.wheel_width * 1e3 : sp.depth};
   j["plate"] = wt.patch ? "patch" : "strip";  // a patch is a candidate (docs/validation.md); the strip the model
   j["loading_time_s"] = wt.loading_time();
   add_shared_summary(j, res, report, interrupted, minutes_done);

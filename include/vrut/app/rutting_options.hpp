@@ -263,9 +263,9 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
       ->check(cli::finite_positive())->capture_default_str()
       ->group("Loading");
   app.add_option("--section", o.section,
-                 "2D: the section along the wheel's travel (the method's; the plate is the contact length) or across "
-                 "it (transverse: the plate is the wheel's width; an experiment of docs/validation.md, round four, "
-                 "not the model)")
+                 "the section along the wheel's travel (the method's; the plate is the contact length) or across "
+                 "it (transverse: the plate is the wheel's width; in 3D a strip across the travel, the periodic depth "
+                 "along it, so the mix flows out sideways; an experiment of docs/validation.md, not the model)")
       ->check(CLI::IsMember({"longitudinal", "transverse"}))->capture_default_str()->group("Loading");
   app.add_option("--plate", o.plate,
                  "3D: the plate a strip across the periodic depth (the model's) or the tyre's patch, the contact "

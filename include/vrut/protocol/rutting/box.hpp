@@ -18,6 +18,13 @@
 //     two stones: 3D needs no stone colours (2D has them for the method's
 //     bonded stones, specimen/colouring.hpp);
 //   - the mould and the plate on the same spring, frictionless by default;
+//   - with WheelTracking::transverse, the strip across the travel: the plate
+//     the wheel's width d along the box's span, still across the whole
+//     periodic depth, which now runs along the travel. Averaged over the
+//     passes the wheel loads its whole path, so the mix is held along the
+//     travel and flows out sideways towards the heave beside the track, as
+//     2D's transverse section has it; the end plates stand for the mould's
+//     sides;
 //   - with WheelTracking::patch, a plate the tyre's patch (l by the wheel's
 //     width d, at mid-depth) in place of the strip across the depth: across
 //     the periodic depth, a row of wheels a box's depth apart. The walls see
@@ -165,9 +172,8 @@ struct BoxSetup {
       : specimens(s), wt(w), mat(m) {
     if (specimens.empty()) throw std::invalid_argument("an ensemble needs at least one specimen");
     num.validate();
-    if (wt.transverse)
-      throw std::invalid_argument("a transverse section is 2D's; the 3D plate spans the box's depth (or the "
-                                  "wheel's width, a patch)");
+    if (wt.transverse && wt.patch)
+      throw std::invalid_argument("a plate is either the strip across the travel or the tyre's patch, not both");
     const Specimen3& first = specimens.front();
     for (const Specimen3& sp : specimens) {
       wt.validate(sp.width * 1e-3);
@@ -217,23 +223,24 @@ struct BoxSetup {
   // Where the plate lies across the depth (the skeleton's cut and the plate's first height look only there).
   DepthBand plate_band() const { return wt.patch ? DepthBand{mid.z, 0.5 * wt.wheel_width, depth} : DepthBand{}; }
 
-  // The plate at height `top`, l long at mid-span and endless along the
-  // depth, or the patch's width at mid-depth (its pressure is its force over
-  // l times its depth); its point, the centre. Its mass ten times the least
+  // The plate at height `top`, its length in the section (l, or the wheel's
+  // width d across the travel) at mid-span and endless along the depth, or
+  // the patch's width at mid-depth (its pressure is its force over its
+  // length times its depth); its point, the centre. Its mass ten times the least
   // that keeps it stable on stiff contacts with every sphere of the top
   // layer under it (one per d^2).
   Wall3 plate(int, double top) const {
-    return Wall3{{mid.x, top, mid.z}, {0.5 * wt.contact_length(), 0.0, 0.0},
+    return Wall3{{mid.x, top, mid.z}, {0.5 * wt.plate_length(), 0.0, 0.0},
                  {0.0, 0.0, wt.patch ? 0.5 * wt.wheel_width : endless}, {}};
   }
   static Vec3 plate_point(const Wall3& w) { return w.centre; }
   double plate_mass(double k_wall, double dt, int) const {
-    const double l = wt.contact_length();
+    const double l = wt.plate_length();
     return 10.0 * k_wall * (l * plate_depth() / (d * d)) * dt * dt / 4.0;
   }
-  double plate_area() const { return wt.contact_length() * plate_depth(); }
+  double plate_area() const { return wt.plate_length() * plate_depth(); }
   LoadControl::params_type plate_load(double fraction, double mass) const {
-    return LoadControl::for_stress(wt.pressure * fraction, wt.contact_length(), plate_depth(), mass, 0.0);
+    return LoadControl::for_stress(wt.pressure * fraction, wt.plate_length(), plate_depth(), mass, 0.0);
   }
 
   // A sphere at the end: where it is and how far it moved while loaded (mm).
