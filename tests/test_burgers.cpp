@@ -5,6 +5,7 @@
 #include <vrut/contact/composite.hpp>
 #include <vrut/contact/film.hpp>
 #include <vrut/material/burgers_parameters.hpp>
+#include <vrut/material/contact_classes.hpp>
 
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
@@ -300,4 +301,67 @@ TEST_CASE("stones that bear on each other hold a shear, a film alone lets it rel
       CHECK(std::abs(f.shear) < 1e-9 * ks * slip);
     }
   }
+}
+
+// Touching stones that still meet through their binder (an experiment:
+// RuttingMaterials::stone_shear_film). Their shear spring k_s sits in series
+// with the binder film's dashpot c, a Maxwell element of time tau = c / k_s,
+// with c the mastic's Maxwell viscosity in shear over the film: in 2D on
+// disks t thick and d across, c = (eta1 / alpha_T) t (d / h) / (2 (1 + nu))
+// and k_s = ratio E1 t / (2 (1 + nu_a)), so tau = (eta1 / alpha_T) (d / h)
+// (1 + nu_a) / (ratio E1 (1 + nu)): 1.6631 ms at alpha_T 1e4 for d = 2 mm
+// and a 20 um film. Sheared at a constant rate v from rest, the spring's
+// force is k_s v tau (1 - e^(-t / tau)); then held, it falls by e^-1 in each
+// tau. The film beside it is the same as without the spring, so the total
+// less that film's force alone is the spring's.
+TEST_CASE("stones meeting through their binder: the held shear relaxes with the film's time constant", "[burgers][physics]") {
+  vrut::RuttingMaterials m;
+  m.stone_shear_film = 20e-6;
+  vrut::ContactScales scales;
+  scales.mastic_length = scales.stone_length = 0.05;
+  scales.diameter = 2e-3;
+  scales.shift = 1e4;
+  const double tau = (83.34e6 / 1e4) * (2e-3 / 20e-6) * 1.25 / (100.0 * 4.64e6 * 1.35);
+  REQUIRE(tau == Approx(1.6631e-3).epsilon(1e-4));
+  const auto law = vrut::stone_film_params(m, scales, 0.3);
+  CHECK(law.shear.stone_relaxation_time == Approx(tau).epsilon(1e-12));
+  const double ks = 100.0 * 4.64e6 * 0.05 / 2.5;
+  CHECK(law.shear.stone_stiffness == Approx(ks).epsilon(1e-12));
+
+  using Shear = vrut::FilmShear;
+  Shear::params_type with = law.shear, film_alone = law.shear;
+  film_alone.stone_stiffness = 0.0;
+  const double dt = tau / 100.0, v = 1e-3;  // m/s of slip
+  Shear::prepare(with, dt);
+  Shear::prepare(film_alone, dt);
+  Shear::state_type a{}, b{};
+  vrut::ContactGeometry g;
+  g.dt = dt;
+  g.overlap = 2.0 * with.thickness + 1e-6;  // the stones touch
+  g.shear_increment = -v * dt;
+  double worst = 0.0;
+  for (int k = 1; k <= 300; ++k) {
+    const double spring = Shear::force(with, a, g) - Shear::force(film_alone, b, g);
+    const double exact = ks * v * tau * -std::expm1(-k * dt / tau);
+    worst = std::max(worst, std::abs(spring / exact - 1.0));
+  }
+  CHECK(worst < 1e-12);
+  const double loaded = a.stone;
+  g.shear_increment = 0.0;
+  for (int k = 1; k <= 100; ++k) Shear::force(with, a, g);
+  CHECK(a.stone == Approx(loaded * std::exp(-1.0)).epsilon(1e-12));
+  // Without the film's dashpot (the model) the spring holds the same force.
+  Shear::params_type holding = law.shear;
+  holding.stone_relaxation_time = 0.0;
+  Shear::prepare(holding, dt);
+  Shear::state_type c{};
+  c.stone = loaded;
+  for (int k = 1; k <= 100; ++k) Shear::force(holding, c, g);
+  CHECK(c.stone == loaded);
+
+  m.stone_film = vrut::StoneFilm::mean;
+  CHECK_THROWS_WITH(vrut::stone_film_params(m, scales, 0.3), Catch::Contains("with the film per contact"));
+  m.stone_film = vrut::StoneFilm::per_contact;
+  m.stone_shear_film = 2e-3;
+  CHECK_THROWS_WITH(vrut::stone_film_params(m, scales, 0.3), Catch::Contains("thinner than a particle's diameter"));
 }

@@ -71,6 +71,7 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
     throw std::invalid_argument("--image gives the specimens: --seed and --seeds do not go with it");
   vrut::SpecimenSettings ss = specimen_cli::to_settings(so);
   o.mat.least_film = least_film_m(o.least_film, ss.gradation, ss.mix);
+  o.mat.stone_shear_film = least_film_m(o.stone_shear_film, ss.gradation, ss.mix, "--stone-shear-film");
   scale_mastic_by_filler(o, ss.gradation, ss.mix);
   // Everything checkable is checked before the specimen is made.
   mat.mastic.validate();
@@ -224,6 +225,7 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   j["stone_film"] = stone_film;
   j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
   j["least_film_um"] = mat.least_film * 1e6;  // a candidate (docs/validation.md); 0 in the model
+  j["stone_shear_film_um"] = mat.stone_shear_film * 1e6;  // an experiment (docs/validation.md); 0 in the model
   j["stone_friction"] = vrut::stone_friction_of(mat);
   j["mastic_by_filler"] = o.mastic_by_filler;  // a candidate in 2D (docs/validation.md); none in the model
   j["mastic_scale"] = o.mastic_scale;

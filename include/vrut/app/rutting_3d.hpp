@@ -105,6 +105,7 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   vrut::TimeShift{num.shift};
   vrut::SpecimenSettings3 ss = specimen_cli::to_settings3(o.so, o.o3);
   o.mat.least_film = least_film_m(o.least_film, ss.gradation, ss.mix);
+  o.mat.stone_shear_film = least_film_m(o.stone_shear_film, ss.gradation, ss.mix, "--stone-shear-film");
   scale_mastic_by_filler(o, ss.gradation, ss.mix);
   wt.validate(ss.placement.width * 1e-3);
   if (wt.patch)
@@ -277,6 +278,7 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   j["stone_film"] = o.stone_film;
   j["mastic_aggregate_factor"] = mat.mastic_aggregate_factor;
   j["least_film_um"] = mat.least_film * 1e6;  // a candidate (docs/validation.md); 0 in the model
+  j["stone_shear_film_um"] = mat.stone_shear_film * 1e6;  // an experiment (docs/validation.md); 0 in the model
   j["stone_friction"] = mat.stone_friction;  // the 3D model's one constant, fitted on 2# (stone_friction_3d)
   j["mastic_by_filler"] = o.mastic_by_filler;  // the filler's Rigden voids, 0.35 in the model (mastic_by_filler_3d)
   j["mastic_scale"] = o.mastic_scale;

@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -52,6 +53,7 @@ struct RunOptions {
   std::string section = "longitudinal";  // --section (wt.transverse)
   std::string plate = "strip";           // --plate (wt.patch)
   std::string least_film = "none";  // --least-film: none, binder or micrometres (least_film_m)
+  std::string stone_shear_film = "none";  // --stone-shear-film: the same words (mat.stone_shear_film)
   std::string mastic_by_filler = "model";  // --mastic-by-filler: model, none or the filler's Rigden voids (mastic_filler_scale)
   double mastic_scale = 1.0;              // the factor --mastic-by-filler gave the mastic (1 with none)
   int threads = 0;
@@ -108,13 +110,27 @@ inline double whole_number(const std::string& text) {
 
 // --least-film's thickness, m: none (0), binder (two binder films of the
 // mix, one on each stone: specimen/binder_film.hpp), or micrometres.
-inline double least_film_m(const std::string& text, const vrut::Gradation& g, const vrut::MixVolumetrics& mix) {
+// The same words give --stone-shear-film's (option names which).
+inline double least_film_m(const std::string& text, const vrut::Gradation& g, const vrut::MixVolumetrics& mix,
+                           const std::string& option = "--least-film") {
   if (text == "none") return 0.0;
   if (text == "binder") return 2.0 * vrut::binder_film(g, mix).thickness_um * 1e-6;
   const double um = whole_number(text);
   if (!(um >= 0.0) || !std::isfinite(um))
-    throw std::invalid_argument("--least-film: '" + text + "' is none, binder or a thickness in micrometres (>= 0)");
+    throw std::invalid_argument(option + ": '" + text + "' is none, binder or a thickness in micrometres (>= 0)");
   return um * 1e-6;
+}
+
+// A --least-film-like option's check: CLI11 names the option itself.
+inline std::function<std::string(const std::string&)> binder_film_check(const std::string& option) {
+  return [option](const std::string& v) {
+    try {
+      least_film_m(v == "binder" ? "0" : v, vrut::builtin_gradation(2), vrut::MixVolumetrics{}, option);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what()).substr(option.size() + 2);
+    }
+    return std::string();
+  };
 }
 
 // --mastic-by-filler, as the dimension resolved it (resolve_model_options):
@@ -217,15 +233,15 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
                  "a candidate, not the model: the thinnest film two stones meet through, so their spring bears only "
                  "past it: none, binder (two binder films of the mix from its gradation and volumetrics, "
                  "docs/validation.md) or micrometres; with --stone-film per-contact")
-      ->check([](const std::string& v) {
-        try {
-          least_film_m(v == "binder" ? "0" : v, vrut::builtin_gradation(2), vrut::MixVolumetrics{});
-        } catch (const std::invalid_argument& e) {
-          return std::string(e.what()).substr(std::string("--least-film: ").size());  // CLI11 names the option
-        }
-        return std::string();
-      })
+      ->check(binder_film_check("--least-film"))
       ->capture_default_str()->group("Materials");
+  app.add_option("--stone-shear-film", o.stone_shear_film,
+                 "an experiment, not the model: touching stones' shear relaxes through the binder film between "
+                 "them (their shear spring in series with the film's dashpot, the mastic's viscosity over the "
+                 "film): none, binder (two binder films of the mix from its gradation and volumetrics, "
+                 "docs/validation.md) or micrometres; with --stone-film per-contact")
+      ->check(binder_film_check("--stone-shear-film"))
+      ->capture_default_str()->group("Experiments (not the model)");
   app.add_option("--mastic-by-filler", o.mastic_by_filler,
                  "each mix's mastic stiffened by its filler (passing 0.075 mm, from --gradation; below its smallest "
                  "sieve the 0.45-power line) over 2#'s, by Krieger-Dougherty: model (3D: 0.35; 2D: none), none, or "

@@ -14,6 +14,8 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <cmath>
+
 namespace vrut {
 
 struct FilmNormal {
@@ -52,6 +54,17 @@ struct FilmShearParams {
   BurgersElement film;
   double thickness = 0.0;        // m, as FilmNormal's
   double stone_stiffness = 0.0;  // N/m; 0: no stones
+  // A candidate, not the model (docs/validation.md): touching stones still
+  // meet through the binder that coats them, so their shear spring sits in
+  // series with that film's dashpot, a Maxwell element of this time
+  // constant (s); 0: none, the spring holds its force until the stones
+  // slide or part.
+  double stone_relaxation_time = 0.0;
+  // Prepared for the time step (prepare): over a step of constant shear
+  // rate the Maxwell element's force is decay times the last plus gain
+  // times the spring's increment, exactly: decay = exp(-dt / tau),
+  // gain = (1 - decay) / (dt / tau).
+  double stone_decay = 1.0, stone_gain = 1.0;
 };
 
 template <class D>
@@ -65,13 +78,24 @@ struct FilmShearIn {
   };
   KOKKOS_INLINE_FUNCTION static shear_type force(const params_type& p, state_type& s, const ContactGeometryIn<D>& g) {
     const shear_type f = burgers_step(p.film, s.film, -g.shear_increment, g.dt);
-    if (p.stone_stiffness > 0.0 && g.overlap > p.thickness)
-      s.stone -= p.stone_stiffness * g.shear_increment;
-    else
+    if (p.stone_stiffness > 0.0 && g.overlap > p.thickness) {
+      if (p.stone_relaxation_time > 0.0)
+        s.stone = p.stone_decay * s.stone - (p.stone_gain * p.stone_stiffness) * g.shear_increment;
+      else
+        s.stone -= p.stone_stiffness * g.shear_increment;
+    } else {
       s.stone = shear_type{};
+    }
     return f + s.stone;
   }
-  static void prepare(params_type& p, double dt) { burgers_prepare(p.film, dt); }
+  static void prepare(params_type& p, double dt) {
+    burgers_prepare(p.film, dt);
+    if (p.stone_relaxation_time > 0.0) {
+      const double steps = dt / p.stone_relaxation_time;
+      p.stone_decay = std::exp(-steps);
+      p.stone_gain = -std::expm1(-steps) / steps;
+    }
+  }
   KOKKOS_INLINE_FUNCTION static shear_type limit(const params_type&, state_type& s, double max_abs) {
     const shear_type film = cap_magnitude(s.film.force, max_abs);
     s.film.force = film;

@@ -74,6 +74,18 @@ struct RuttingMaterials {
   // coated stones touch through two binder films (specimen/binder_film.hpp
   // gives one's thickness from the mix's volumetrics; --least-film binder).
   double least_film = 0.0;
+  // The binder film that a touching pair of stones' shear relaxes through, m
+  // (0: none, the frozen models): a candidate of the fidelity study, not
+  // adopted unless docs/validation.md's table says so. Two coated stones
+  // that bear on each other still meet through their binder (two films,
+  // specimen/binder_film.hpp), and a sheared film relaxes a shear force
+  // where a Coulomb cap holds it for ever. The stones' shear spring goes in
+  // series with the dashpot of that film: the mastic's Maxwell viscosity in
+  // shear over the film's thickness, by the same lattice rule as every
+  // mastic contact (the model knows no other viscous binder; a binder
+  // without its filler would relax faster still). No constant is fitted.
+  // With the film per contact only.
+  double stone_shear_film = 0.0;
   double wall_friction = 0.0;           // mould walls and plate
   // Rigid stones (data/bodies.hpp), the default: each aggregate moves as one
   // body instead of method.md's bonded disks on the stone's 2 t E springs
@@ -160,6 +172,24 @@ inline BurgersFilmBonded::params_type mastic_stone_params(const RuttingMaterials
       mastic_params(reduced, s.mastic_length, m.mastic_nu, s.conversion, m.mastic_aggregate_factor, m.friction));
 }
 
+// The time constant (s, at the table's shift) of the stones' shear spring
+// `stone_shear` (N/m) in series with the dashpot of a binder film of
+// m.stone_shear_film: the film's Maxwell viscosity in shear, the mastic's
+// over that film's thickness (a factor of the particle diameter over it, as
+// stone_film_params sizes every film), over the spring.
+inline double stone_shear_relaxation_time(const RuttingMaterials& m, const ContactScales& s, double stone_shear) {
+  if (!(m.stone_shear_film > 0.0) || !std::isfinite(m.stone_shear_film) || !(m.stone_shear_film < s.diameter))
+    throw std::invalid_argument("the binder film a stone contact's shear relaxes through must be positive and "
+                                "thinner than a particle's diameter");
+  if (!m.film_per_contact())
+    throw std::invalid_argument("a stone contact's shear relaxes through its binder film with the film per contact "
+                                "(stone film 'per-contact')");
+  const BurgersMacro reduced = m.mastic.shifted(TimeShift(s.shift));
+  const BurgersElement film = burgers_element(reduced, s.mastic_length, s.diameter / m.stone_shear_film /
+                                              (2.0 * (1.0 + m.mastic_nu)), s.conversion);
+  return film.maxwell_viscosity / stone_shear;
+}
+
 // Two stones through a film `gap` particle diameters thick: the mastic's
 // Burger's law over that length (per contact, never thinner than
 // film_least_gap), the stones' springs beyond it; or, endless, the film alone.
@@ -169,8 +199,11 @@ inline BurgersFilmBonded::params_type stone_film_params(const RuttingMaterials& 
   const auto stone = stone_law_params(m, s.stone_length, stone_friction);
   const double length = m.film_per_contact() ? std::max(gap, film_least_gap) : gap;
   const auto mastic = mastic_params(reduced, s.mastic_length, m.mastic_nu, s.conversion, 1.0 / length, stone_friction);
-  return m.film_endless ? film_params(mastic)
-                        : film_params(mastic, gap * s.diameter, stone.normal.stiffness, stone.shear.stiffness);
+  if (m.film_endless) return film_params(mastic);
+  auto p = film_params(mastic, gap * s.diameter, stone.normal.stiffness, stone.shear.stiffness);
+  if (m.stone_shear_film > 0.0)
+    p.shear.stone_relaxation_time = stone_shear_relaxation_time(m, s, stone.shear.stiffness);
+  return p;
 }
 
 }  // namespace vrut
