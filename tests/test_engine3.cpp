@@ -6,6 +6,8 @@
 #include "openmp_threads.hpp"
 #include "pile3.hpp"
 #include "spaces.hpp"
+#include "../examples/custom_law/soft_contact.hpp"
+#include "../examples/custom_law/stiffening_both.hpp"
 
 #include <vrut/material/burgers_parameters.hpp>
 #include <vrut/vrut.hpp>
@@ -519,4 +521,69 @@ TEMPLATE_LIST_TEST_CASE("3D: a bonded FCC block has the lattice's C11 and C12", 
   const double m11 = stress.z / strain, m12 = 0.5 * (stress.x + stress.y) / strain;
   const double modulus = (m11 - m12) * (m11 + 2.0 * m12) / (m11 + m12);
   CHECK(modulus == Approx(MicroConversion::fcc_lattice_modulus_factor(ks / kn) * kn / d).epsilon(2e-3));
+}
+
+// The contact-laws page's law for both dimensions
+// (examples/custom_law/stiffening_both.hpp), in the engine and against the
+// 2D law it generalises (soft_contact.hpp). Two equal spheres meeting head
+// on at v each store their relative kinetic energy m v^2 in the spring, so
+// the deepest overlap solves k (delta^2 / 2 + delta^3 / (3 r0)) = m v^2; the
+// law conserves energy, so they part at v each. In 2D it is the page's 2D
+// law, bit for bit; in 3D a slip along any direction is capped at mu F_n
+// against it.
+TEST_CASE("the contact-laws page's law for both dimensions: a head-on collision's deepest overlap, and the 2D law",
+          "[engine3][laws]") {
+  using namespace vrut;
+  using Both = StiffeningContactIn<Dim2>;
+  using Both3 = in_dimension_t<Both, Dim3>;
+  static_assert(std::is_same_v<Both3, StiffeningContactIn<Dim3>>);
+  const double r = 0.5, k = 1e5, r0 = 0.01, v = 0.1, mu = 0.5;
+  ParticleSet set;
+  set.add_sphere(-1.0001 * r, 0.0, 0.0, r, 1000.0);
+  set.add_sphere(1.0001 * r, 0.0, 0.0, r, 1000.0);
+  AssignmentTable<Both3> table;
+  table.set_all({k, r0, k, mu});
+  Simulation3<Both3, Kokkos::DefaultHostExecutionSpace, CentralDifference, VelocityControl> sim(set, table);
+  auto ps = sim.particles();
+  auto hv = vrut_test::to_host(ps.velocity);
+  hv(0) = {v, 0.0, 0.0};
+  hv(1) = {-v, 0.0, 0.0};
+  Kokkos::deep_copy(ps.velocity, hv);
+  const double m = vrut_test::to_host(ps.mass)(0);
+  double delta = std::sqrt(2.0 * m * v * v / k);  // the linear spring's, then Newton's steps
+  for (int i = 0; i < 50; ++i)
+    delta -= (k * (0.5 * delta * delta + delta * delta * delta / (3.0 * r0)) - m * v * v) /
+             (k * (delta + delta * delta / r0));
+  const double dt = 1e-3 * delta / v;
+  double deepest = 0.0;
+  for (int i = 0; i < 6000; ++i) {
+    sim.run(1, dt);
+    auto x = vrut_test::to_host(ps.position);
+    deepest = std::max(deepest, 2.0 * r - norm(x(1) - x(0)));
+  }
+  CHECK(deepest == Approx(delta).epsilon(1e-4));
+  auto after = vrut_test::to_host(ps.velocity);
+  CHECK(after(0).x == Approx(-v).epsilon(1e-4));
+  CHECK(after(1).x == Approx(v).epsilon(1e-4));
+
+  const Both::params_type p{k, r0, 0.4 * k, mu};
+  Both::state_type both{};
+  StiffeningContact::state_type plain{};
+  Both3::state_type three{};
+  const Vec3 e{2.0 / 3.0, 1.0 / 3.0, -2.0 / 3.0};
+  for (int i = 0; i < 200; ++i) {
+    ContactGeometry g;
+    g.overlap = 1e-5 * (1 + i % 50);
+    g.shear_increment = i < 120 ? 2e-6 : -3e-6;
+    const ContactForce a = Both::force(p, both, g);
+    const ContactForce b = StiffeningContact::force({k, r0, 0.4 * k, mu}, plain, g);
+    CHECK(a.normal == b.normal);
+    CHECK(a.shear == b.shear);
+    ContactGeometry3 g3;
+    g3.overlap = g.overlap;
+    g3.shear_increment = g.shear_increment * e;
+    const ContactForceIn<Dim3> f3 = Both3::force(p, three, g3);
+    CHECK(f3.normal == a.normal);
+    CHECK(norm(f3.shear - a.shear * e) <= 1e-12 * mu * f3.normal);
+  }
 }

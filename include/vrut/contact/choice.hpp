@@ -1,9 +1,10 @@
 #pragma once
-// One of two contact laws, chosen per material pair by the assignment table:
-// the rutting test's mastic contacts are Burger's, its aggregate contacts
-// linear. The choice is data (an index in the pair's parameters), so a
-// Simulation keeps one law type; the branch costs one predictable test per
-// contact, not a virtual call.
+/// \file
+/// One of two contact laws, chosen per material pair by the assignment table:
+/// the rutting test's mastic contacts are Burger's, its aggregate contacts
+/// linear. The choice is data (an index in the pair's parameters), so a
+/// Simulation keeps one law type; the branch costs one predictable test per
+/// contact, not a virtual call.
 #include <vrut/contact/concept.hpp>
 #include <vrut/contact/geometry.hpp>
 
@@ -13,7 +14,7 @@
 
 namespace vrut {
 
-// The choice's parameters, the same type in 2D and 3D.
+/// The choice's parameters, the same type in 2D and 3D.
 template <class FirstParams, class SecondParams>
 struct ChoiceParams {
   int use_second = 0;
@@ -33,11 +34,11 @@ struct Choice {
 
   using params_type = ChoiceParams<typename First::params_type, typename Second::params_type>;
 
-  // A slot holds the state of the law that acts there only (`law`, set by
-  // the first force), the two laws' states sharing their bytes: in 3D's
-  // rutting table 104 bytes a slot instead of both laws' 136. A bond asked
-  // for before the first force (or between forces) waits in `bond_asked`
-  // and is made on the law that acts, as if both halves had been bonded.
+  /// A slot holds the state of the law that acts there only (`law`, set by
+  /// the first force), the two laws' states sharing their bytes: in 3D's
+  /// rutting table 104 bytes a slot instead of both laws' 136. A bond asked
+  /// for before the first force (or between forces) waits in `bond_asked`
+  /// and is made on the law that acts, as if both halves had been bonded.
   struct state_type {
     union Storage {
       typename First::state_type first;
@@ -79,8 +80,8 @@ struct Choice {
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) {
     return p.use_second ? Second::stiffness(p.second) : First::stiffness(p.first);
   }
-  // A bond waiting for the first force counts as bonded where either law
-  // can hold one; after it, the law that acts says.
+  /// A bond waiting for the first force counts as bonded where either law
+  /// can hold one; after it, the law that acts says.
   KOKKOS_INLINE_FUNCTION static bool bonded(const state_type& s) {
     if (s.bond_asked) return true;
     if (s.law == 1) return is_bonded<First>(s.of.first);
@@ -90,8 +91,8 @@ struct Choice {
   KOKKOS_INLINE_FUNCTION static void bond(state_type& s) {
     if (can_bond()) s.bond_asked = 1;
   }
-  // Fresh again: the next force starts its law's state from {} (writing two
-  // bytes, not the whole slot, for each pair of the list that is apart).
+  /// Fresh again: the next force starts its law's state from {} (writing two
+  /// bytes, not the whole slot, for each pair of the list that is apart).
   KOKKOS_INLINE_FUNCTION static void forget(state_type& s) {
     s.law = 0;
     s.bond_asked = 0;
@@ -103,8 +104,8 @@ struct Choice {
   }
 
  private:
-  // Whether either law holds a bond once asked to (a law without bonds
-  // ignores the request).
+  /// Whether either law holds a bond once asked to (a law without bonds
+  /// ignores the request).
   KOKKOS_INLINE_FUNCTION static bool can_bond() {
     typename First::state_type a{};
     make_bonded<First>(a);

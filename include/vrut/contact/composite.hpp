@@ -1,24 +1,25 @@
 #pragma once
-// A contact law composed of a normal slot, a shear slot and a bond slot,
-// evaluated in that order; the composition is itself a contact law.
-//
-// Normal slot: params_type, state_type,
-//   double force(const params_type&, state_type&, const ContactGeometry&), double stiffness(params).
-// Shear slot: the same with the shear value of its dimension (double in 2D,
-//   Vec3 in 3D; data/dimension.hpp) in place of the double, plus
-//   limit(const params_type&, state_type&, double max_abs), which caps the
-//   stored shear force's magnitude (the Coulomb slider). A shear slot that is
-//   a template on its dimension (LinearShearIn<D>) gives the law both forms:
-//   Composite<N, LinearShearIn<Dim2>, B> in 3D is Composite<N, LinearShearIn<Dim3>, B>,
-//   with the same params_type.
-// Bond slot: see bond.hpp.
-// A normal slot with history may also provide
-//   void cut_tension(const params_type&, state_type&),
-// called when an unbonded contact would pull, to drop the stored tension.
-//
-// While a bond holds, tension and any shear below the bond strength are carried.
-// Without a bond (or once it breaks) tension is cut to zero and the shear force
-// to friction * normal force.
+/// \file
+/// A contact law composed of a normal slot, a shear slot and a bond slot,
+/// evaluated in that order; the composition is itself a contact law.
+///
+/// Normal slot: params_type, state_type,
+///   double force(const params_type&, state_type&, const ContactGeometry&), double stiffness(params).
+/// Shear slot: the same with the shear value of its dimension (double in 2D,
+///   Vec3 in 3D; data/dimension.hpp) in place of the double, plus
+///   limit(const params_type&, state_type&, double max_abs), which caps the
+///   stored shear force's magnitude (the Coulomb slider). A shear slot that is
+///   a template on its dimension (LinearShearIn<D>) gives the law both forms:
+///   Composite<N, LinearShearIn<Dim2>, B> in 3D is Composite<N, LinearShearIn<Dim3>, B>,
+///   with the same params_type.
+/// Bond slot: see bond.hpp.
+/// A normal slot with history may also provide
+///   void cut_tension(const params_type&, state_type&),
+/// called when an unbonded contact would pull, to drop the stored tension.
+///
+/// While a bond holds, tension and any shear below the bond strength are carried.
+/// Without a bond (or once it breaks) tension is cut to zero and the shear force
+/// to friction * normal force.
 #include <vrut/contact/bond.hpp>
 #include <vrut/contact/burgers.hpp>
 #include <vrut/contact/concept.hpp>
@@ -39,7 +40,7 @@ struct has_cut_tension<N, std::void_t<decltype(N::cut_tension(std::declval<const
     : std::true_type {};
 }  // namespace detail
 
-// A composed law's parameters, the same type in 2D and 3D.
+/// A composed law's parameters, the same type in 2D and 3D.
 template <class NormalParams, class ShearParams, class BondParams>
 struct CompositeParams {
   NormalParams normal;
@@ -103,12 +104,12 @@ struct in_dimension<Composite<Normal, Shear, Bond>, D> {
   using type = Composite<in_dimension_t<Normal, D>, in_dimension_t<Shear, D>, Bond>;
 };
 
-// The two laws of the core, and helpers that spell their parameters.
+/// The two laws of the core, and helpers that spell their parameters.
 using Linear = Composite<LinearNormal, LinearShear, NoBond>;
 using LinearBonded = Composite<LinearNormal, LinearShear, ContactBond>;
 using Burgers = Composite<BurgersNormal, BurgersShear, NoBond>;
 using BurgersBonded = Composite<BurgersNormal, BurgersShear, ContactBond>;
-// Stone on stone and stone on wall with rigid stones: damped (linear.hpp).
+/// Stone on stone and stone on wall with rigid stones: damped (linear.hpp).
 using DampedLinear = Composite<DampedLinearNormal, LinearShear, NoBond>;
 using DampedLinearBonded = Composite<DampedLinearNormal, LinearShear, ContactBond>;
 

@@ -1,32 +1,33 @@
 #pragma once
-// What a contact law must provide, checked with messages that name the gap.
-//
-//   struct MyLaw {
-//     struct params_type { ... };   // trivially copyable, per material pair
-//     struct state_type  { ... };   // trivially copyable, per contact; {} = fresh
-//     KOKKOS_INLINE_FUNCTION static ContactForce
-//       force(const params_type&, state_type&, const ContactGeometry&);
-//     KOKKOS_INLINE_FUNCTION static double stiffness(const params_type&);  // for the time step
-//   };
-//
-// The geometry and force are ContactGeometryIn<D> and ContactForceIn<D> of
-// the law's dimension D (data/dimension.hpp): a law declares it with
-// `using dimension = Dim3;`, and without it is a 2D law, written with
-// ContactGeometry and ContactForce.
-//
-// Optional: `static bool bonded(const state_type&)` (a bonded contact is kept,
-// and evaluated, while its disks are apart), `static void bond(state_type&)`
-// (called for every touching pair by Simulation::bond_touching_contacts), and
-// `static void prepare(params_type&, double dt)` (called on the host for every
-// material pair whenever the time step changes, so that a law can work out
-// once what depends only on its parameters and dt; force() must give the same
-// result with or without it). A 3D law with history that lies in the
-// tangent plane (a shear spring's force) provides
-// `template <class Turn> static void turn(state_type&, const Turn& turn)`,
-// which replaces each such vector v by turn(v) as the contact's frame turns
-// (contact/geometry3.hpp, ContactTurn). `static void forget(state_type&)`
-// makes a state behave as fresh more cheaply than writing `{}` over it (the
-// engine forgets every pair of its list that is apart, every step).
+/// \file
+/// What a contact law must provide, checked with messages that name the gap.
+///
+///   struct MyLaw {
+///     struct params_type { ... };   // trivially copyable, per material pair
+///     struct state_type  { ... };   // trivially copyable, per contact; {} = fresh
+///     KOKKOS_INLINE_FUNCTION static ContactForce
+///       force(const params_type&, state_type&, const ContactGeometry&);
+///     KOKKOS_INLINE_FUNCTION static double stiffness(const params_type&);  // for the time step
+///   };
+///
+/// The geometry and force are ContactGeometryIn<D> and ContactForceIn<D> of
+/// the law's dimension D (data/dimension.hpp): a law declares it with
+/// `using dimension = Dim3;`, and without it is a 2D law, written with
+/// ContactGeometry and ContactForce.
+///
+/// Optional: `static bool bonded(const state_type&)` (a bonded contact is kept,
+/// and evaluated, while its disks are apart), `static void bond(state_type&)`
+/// (called for every touching pair by Simulation::bond_touching_contacts), and
+/// `static void prepare(params_type&, double dt)` (called on the host for every
+/// material pair whenever the time step changes, so that a law can work out
+/// once what depends only on its parameters and dt; force() must give the same
+/// result with or without it). A 3D law with history that lies in the
+/// tangent plane (a shear spring's force) provides
+/// `template <class Turn> static void turn(state_type&, const Turn& turn)`,
+/// which replaces each such vector v by turn(v) as the contact's frame turns
+/// (contact/geometry3.hpp, ContactTurn). `static void forget(state_type&)`
+/// makes a state behave as fresh more cheaply than writing `{}` over it (the
+/// engine forgets every pair of its list that is apart, every step).
 #include <vrut/contact/geometry.hpp>
 #include <vrut/data/dimension.hpp>
 
@@ -35,7 +36,7 @@
 
 namespace vrut {
 
-// The dimension a law is written for: its member type `dimension`, else 2D.
+/// The dimension a law is written for: its member type `dimension`, else 2D.
 template <class L, class = void>
 struct law_dimension { using type = Dim2; };
 template <class L>
@@ -47,11 +48,11 @@ template <class T> struct is_dimension : std::false_type {};
 template <> struct is_dimension<Dim2> : std::true_type {};
 template <> struct is_dimension<Dim3> : std::true_type {};
 
-// A law's form in dimension D, so that one law (Linear, the rutting test's
-// laws) serves 2D and 3D. A law written for D is its own form; a slot that
-// is a template on its dimension alone (LinearShearIn<D>) takes D; the
-// composed laws (Composite, Choice) rebind their slots. Any other law keeps
-// its dimension, and the engine says so where it does not match.
+/// A law's form in dimension D, so that one law (Linear, the rutting test's
+/// laws) serves 2D and 3D. A law written for D is its own form; a slot that
+/// is a template on its dimension alone (LinearShearIn<D>) takes D; the
+/// composed laws (Composite, Choice) rebind their slots. Any other law keeps
+/// its dimension, and the engine says so where it does not match.
 template <class L, class D, class = void>
 struct in_dimension { using type = L; };
 template <template <class> class Slot, class Old, class D>
@@ -115,8 +116,8 @@ struct law_members_ok<L, true>
 
 }  // namespace detail
 
-// Fails the build with one message per missing piece. Use it where a law
-// enters a template: `static_assert(check_contact_law<Law>())`.
+/// Fails the build with one message per missing piece. Use it where a law
+/// enters a template: `static_assert(check_contact_law<Law>())`.
 template <class Law>
 constexpr bool check_contact_law() {
   static_assert(detail::has_params_type<Law>::value,
@@ -139,7 +140,7 @@ constexpr bool check_contact_law() {
   return detail::law_members_ok<Law>::value;
 }
 
-// Bond queries that work for every law, bonded or not.
+/// Bond queries that work for every law, bonded or not.
 template <class Law>
 KOKKOS_INLINE_FUNCTION bool is_bonded(const typename Law::state_type& s) {
   if constexpr (detail::has_bonded<Law>::value) return Law::bonded(s);
@@ -150,29 +151,29 @@ KOKKOS_INLINE_FUNCTION void make_bonded(typename Law::state_type& s) {
   if constexpr (detail::has_bond<Law>::value) Law::bond(s);
   else (void)s;
 }
-// Makes a contact's state fresh: the law's own `forget`, else `{}`.
+/// Makes a contact's state fresh: the law's own `forget`, else `{}`.
 template <class Law>
 KOKKOS_INLINE_FUNCTION void forget_contact(typename Law::state_type& s) {
   if constexpr (detail::has_forget<Law>::value) Law::forget(s);
   else s = typename Law::state_type{};
 }
-// Whether a law reads the masses of ContactGeometry (a law or slot says so
-// with `static constexpr bool uses_mass = true`); the engine fills them only
-// then, so laws without it cost no extra memory traffic.
+/// Whether a law reads the masses of ContactGeometry (a law or slot says so
+/// with `static constexpr bool uses_mass = true`); the engine fills them only
+/// then, so laws without it cost no extra memory traffic.
 template <class Law>
 constexpr bool law_uses_mass() {
   return detail::has_uses_mass<Law>::value;
 }
 
-// Carries a 3D law's tangent-plane history into the contact's new frame
-// (see `turn` above); a law without it keeps none.
+/// Carries a 3D law's tangent-plane history into the contact's new frame
+/// (see `turn` above); a law without it keeps none.
 template <class Law, class Turn>
 KOKKOS_INLINE_FUNCTION void turn_history(typename Law::state_type& s, const Turn& turn) {
   if constexpr (detail::has_turn<Law, Turn>::value) Law::turn(s, turn);
   else (void)s, (void)turn;
 }
 
-// Host-side: a law's per-time-step preparation, where it has one.
+/// Host-side: a law's per-time-step preparation, where it has one.
 template <class Law>
 void prepare_law(typename Law::params_type& p, double dt) {
   if constexpr (detail::has_prepare<Law>::value) Law::prepare(p, dt);

@@ -1,13 +1,14 @@
 #pragma once
-// A mastic film between two stones: the normal slot of a composed law (see
-// composite.hpp). The film's Burger's element carries the load in parallel
-// with the stones' linear spring, and the spring bears only once the overlap
-// exceeds the film's thickness: the film has squeezed out and the stones
-// touch. A film creeps, but not without end, as BurgersNormal alone would.
-//
-// With no stone spring (stone_stiffness 0, the default) the slot is
-// BurgersNormal, bit for bit: the mastic contacts of the rutting table use
-// it that way.
+/// \file
+/// A mastic film between two stones: the normal slot of a composed law (see
+/// composite.hpp). The film's Burger's element carries the load in parallel
+/// with the stones' linear spring, and the spring bears only once the overlap
+/// exceeds the film's thickness: the film has squeezed out and the stones
+/// touch. A film creeps, but not without end, as BurgersNormal alone would.
+///
+/// With no stone spring (stone_stiffness 0, the default) the slot is
+/// BurgersNormal, bit for bit: the mastic contacts of the rutting table use
+/// it that way.
 #include <vrut/contact/burgers.hpp>
 #include <vrut/contact/composite.hpp>
 #include <vrut/contact/geometry.hpp>
@@ -24,7 +25,7 @@ struct FilmNormal {
     double thickness = 0.0;        // m: the overlap at which the stones touch
     double stone_stiffness = 0.0;  // N/m, the stones' spring beyond it; 0: no stones
   };
-  // Only the film's force is history; the stones' spring is elastic.
+  /// Only the film's force is history; the stones' spring is elastic.
   using state_type = BurgersHistory;
 
   template <class Geometry>
@@ -34,36 +35,36 @@ struct FilmNormal {
     return f;
   }
   static void prepare(params_type& p, double dt) { burgers_prepare(p.film, dt); }
-  // The total can pull only where the film does (the spring never pulls).
+  /// The total can pull only where the film does (the spring never pulls).
   KOKKOS_INLINE_FUNCTION static void cut_tension(const params_type&, state_type& s) {
     if (s.force < 0.0) s.force = 0.0;
   }
-  // In parallel, the two springs add (this bounds the critical time step).
+  /// In parallel, the two springs add (this bounds the critical time step).
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) {
     return p.film.maxwell_stiffness + p.stone_stiffness;
   }
 };
 
-// The shear slot of the same film: the film's Burger's element in parallel
-// with the stones' shear spring, which holds while the stones touch (the
-// overlap exceeds the thickness) and lets go when they part. Stones that
-// bear on each other do not slide below their friction, as a creeping film
-// alone would. The Coulomb cap takes the stones' part first (they slide),
-// then the film's.
+/// The shear slot of the same film: the film's Burger's element in parallel
+/// with the stones' shear spring, which holds while the stones touch (the
+/// overlap exceeds the thickness) and lets go when they part. Stones that
+/// bear on each other do not slide below their friction, as a creeping film
+/// alone would. The Coulomb cap takes the stones' part first (they slide),
+/// then the film's.
 struct FilmShearParams {
   BurgersElement film;
   double thickness = 0.0;        // m, as FilmNormal's
   double stone_stiffness = 0.0;  // N/m; 0: no stones
-  // A candidate, not the model (docs/validation.md): touching stones still
-  // meet through the binder that coats them, so their shear spring sits in
-  // series with that film's dashpot, a Maxwell element of this time
-  // constant (s); 0: none, the spring holds its force until the stones
-  // slide or part.
+  /// A candidate, not the model (docs/validation.md): touching stones still
+  /// meet through the binder that coats them, so their shear spring sits in
+  /// series with that film's dashpot, a Maxwell element of this time
+  /// constant (s); 0: none, the spring holds its force until the stones
+  /// slide or part.
   double stone_relaxation_time = 0.0;
-  // Prepared for the time step (prepare): over a step of constant shear
-  // rate the Maxwell element's force is decay times the last plus gain
-  // times the spring's increment, exactly: decay = exp(-dt / tau),
-  // gain = (1 - decay) / (dt / tau).
+  /// Prepared for the time step (prepare): over a step of constant shear
+  /// rate the Maxwell element's force is decay times the last plus gain
+  /// times the spring's increment, exactly: decay = exp(-dt / tau),
+  /// gain = (1 - decay) / (dt / tau).
   double stone_decay = 1.0, stone_gain = 1.0;
 };
 
@@ -114,11 +115,11 @@ struct FilmShearIn {
 };
 using FilmShear = FilmShearIn<Dim2>;
 
-// The rutting test's mastic law: Burger's with a bond, and a film where the
-// table gives it stones.
+/// The rutting test's mastic law: Burger's with a bond, and a film where the
+/// table gives it stones.
 using BurgersFilmBonded = Composite<FilmNormal, FilmShear, ContactBond>;
 
-// A mastic law as a film law: with no stone stiffness the same law.
+/// A mastic law as a film law: with no stone stiffness the same law.
 inline BurgersFilmBonded::params_type film_params(const BurgersBonded::params_type& mastic, double thickness = 0.0,
                                                   double stone_stiffness = 0.0, double stone_shear_stiffness = 0.0) {
   BurgersFilmBonded::params_type p;

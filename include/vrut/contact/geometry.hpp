@@ -1,12 +1,13 @@
 #pragma once
-// What a contact law sees of a contact, and what it returns, in 2D and 3D
-// (data/dimension.hpp).
-//
-// Conventions: the normal points from the first body to the second. A
-// positive normal force pushes the bodies apart (compression); a negative
-// one is tension (bonded only). The shear is the second body's, relative to
-// the first: in 2D a scalar along the tangent (the normal turned by +90
-// degrees), in 3D a vector in the tangent plane.
+/// \file
+/// What a contact law sees of a contact, and what it returns, in 2D and 3D
+/// (data/dimension.hpp).
+///
+/// Conventions: the normal points from the first body to the second. A
+/// positive normal force pushes the bodies apart (compression); a negative
+/// one is tension (bonded only). The shear is the second body's, relative to
+/// the first: in 2D a scalar along the tangent (the normal turned by +90
+/// degrees), in 3D a vector in the tangent plane.
 #include <vrut/data/dimension.hpp>
 #include <vrut/data/vec2.hpp>
 
@@ -22,9 +23,9 @@ struct ContactGeometryIn {
   typename D::shear shear_increment{};  // tangential slip of the second body relative to the first, last step
   double dt = 0.0;
   double radius_1 = 0.0, radius_2 = 0.0;  // radius_1 == 0 for a wall
-  // The masses the contact moves: a particle's own, or its rigid body's
-  // where it is a member of one; 0 for a wall (which no contact moves). Set
-  // only for laws that read them (`static constexpr bool uses_mass = true`).
+  /// The masses the contact moves: a particle's own, or its rigid body's
+  /// where it is a member of one; 0 for a wall (which no contact moves). Set
+  /// only for laws that read them (`static constexpr bool uses_mass = true`).
   double mass_1 = 0.0, mass_2 = 0.0;
 };
 
@@ -34,7 +35,7 @@ struct ContactForceIn {
   typename D::shear shear{};        // on the second body, in the tangent (plane)
 };
 
-// The 2D names every 2D law is written with.
+/// The 2D names every 2D law is written with.
 using ContactGeometry = ContactGeometryIn<Dim2>;
 using ContactForce = ContactForceIn<Dim2>;
 

@@ -1,5 +1,6 @@
 #pragma once
-// Linear springs: the normal and shear slots of a composed law (see composite.hpp).
+/// \file
+/// Linear springs: the normal and shear slots of a composed law (see composite.hpp).
 #include <vrut/contact/geometry.hpp>
 #include <vrut/data/dimension.hpp>
 
@@ -7,8 +8,8 @@
 
 namespace vrut {
 
-// Normal force proportional to the total overlap: F_n = k_n * overlap.
-// With a bond holding, a negative overlap gives tension.
+/// Normal force proportional to the total overlap: F_n = k_n * overlap.
+/// With a bond holding, a negative overlap gives tension.
 struct LinearNormal {
   struct params_type { double stiffness = 0.0; };  // k_n, N/m
   struct state_type {};
@@ -19,11 +20,11 @@ struct LinearNormal {
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) { return p.stiffness; }
 };
 
-// A linear spring with a viscous dashpot beside it, set as a fraction of the
-// critical damping of the pair: F_n = k_n overlap + c d(overlap)/dt, with
-// c = 2 zeta sqrt(k_n m*), m* = m_1 m_2 / (m_1 + m_2) (m_2 against a wall).
-// Rigid stones ring undamped on a plain spring; real stone rings down. With
-// zeta = 0 it is LinearNormal, bit for bit.
+/// A linear spring with a viscous dashpot beside it, set as a fraction of the
+/// critical damping of the pair: F_n = k_n overlap + c d(overlap)/dt, with
+/// c = 2 zeta sqrt(k_n m*), m* = m_1 m_2 / (m_1 + m_2) (m_2 against a wall).
+/// Rigid stones ring undamped on a plain spring; real stone rings down. With
+/// zeta = 0 it is LinearNormal, bit for bit.
 struct DampedLinearNormal {
   struct params_type {
     double stiffness = 0.0;      // k_n, N/m
@@ -43,8 +44,8 @@ struct DampedLinearNormal {
   KOKKOS_INLINE_FUNCTION static double stiffness(const params_type& p) { return p.stiffness; }
 };
 
-// Incremental shear spring: dF_s = -k_s * (tangential slip during the step),
-// a scalar along the tangent in 2D, a vector in the tangent plane in 3D.
+/// Incremental shear spring: dF_s = -k_s * (tangential slip during the step),
+/// a scalar along the tangent in 2D, a vector in the tangent plane in 3D.
 struct LinearShearParams { double stiffness = 0.0; };  // k_s, N/m
 
 template <class D>
@@ -57,7 +58,7 @@ struct LinearShearIn {
     s.force -= p.stiffness * g.shear_increment;
     return s.force;
   }
-  // Coulomb cap: the stored force slides back to the limit, so unloading starts from there.
+  /// Coulomb cap: the stored force slides back to the limit, so unloading starts from there.
   KOKKOS_INLINE_FUNCTION static shear_type limit(const params_type&, state_type& s, double max_abs) {
     return s.force = cap_magnitude(s.force, max_abs);
   }

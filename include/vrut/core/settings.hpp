@@ -1,6 +1,7 @@
 #pragma once
-// A simulation's settings: a 2D disk's thickness, gravity, the contact
-// list's skin, and in 3D the box with its periodic axes.
+/// \file
+/// A simulation's settings: a 2D disk's thickness, gravity, the contact
+/// list's skin, and in 3D the box with its periodic axes.
 #include <vrut/data/dimension.hpp>
 #include <vrut/neighbor/periodic_box3.hpp>
 

@@ -1,36 +1,37 @@
 #pragma once
-// The DEM engine: particles, walls, contacts and one time step, all
-// templated, one source for 2D and 3D.
-//
-//   Law          contact law between particles (contact/concept.hpp)
-//   Space        Kokkos execution space the kernels run in
-//   Integrator   time integration policy (integrate/central_difference.hpp)
-//   Controller   wall controller policy: by default VelocityControl (walls keep
-//                the velocity they are given; control/velocity.hpp), or a
-//                servo or dead load (servo/servo.hpp)
-//   WallLaw      contact law between particles and walls
-//   Dim          Dim2 (disks of thickness t, segment walls) or Dim3 (spheres,
-//                plates, periodic axes): Geometry<Dim>, core/geometry2.hpp
-//                and core/geometry3.hpp. The laws are given in their 2D
-//                names; the engine takes their form in Dim (in_dimension).
-//
-// One step (PFC's cycle), each part in a room of its own:
-//   - the contact list, rebuilt once a particle has moved half the skin
-//     (core/contact_list.hpp);
-//   - the contact forces from the positions at t and the velocities at
-//     t - dt/2 (core/force_pass.hpp);
-//   - per particle, the forces summed in a fixed order, the wall contacts,
-//     and the motion advanced (core/sum_and_advance.hpp);
-//   - the rigid bodies advanced from their members (core/body_set.hpp);
-//   - the wall loads summed in a fixed order, the controllers, the walls
-//     moved (core/wall_set.hpp).
-//
-// Ensembles: the particles may belong to several specimens
-// (ParticleSet::specimen) that share every kernel launch but never interact:
-// contacts are searched within a specimen only, and each wall belongs to one
-// specimen and touches only its particles. Every sum runs in the order a
-// specimen alone would use, so each specimen follows exactly the trajectory
-// of its own single run.
+/// \file
+/// The DEM engine: particles, walls, contacts and one time step, all
+/// templated, one source for 2D and 3D.
+///
+///   Law          contact law between particles (contact/concept.hpp)
+///   Space        Kokkos execution space the kernels run in
+///   Integrator   time integration policy (integrate/central_difference.hpp)
+///   Controller   wall controller policy: by default VelocityControl (walls keep
+///                the velocity they are given; control/velocity.hpp), or a
+///                servo or dead load (servo/servo.hpp)
+///   WallLaw      contact law between particles and walls
+///   Dim          Dim2 (disks of thickness t, segment walls) or Dim3 (spheres,
+///                plates, periodic axes): Geometry<Dim>, core/geometry2.hpp
+///                and core/geometry3.hpp. The laws are given in their 2D
+///                names; the engine takes their form in Dim (in_dimension).
+///
+/// One step (PFC's cycle), each part in a room of its own:
+///   - the contact list, rebuilt once a particle has moved half the skin
+///     (core/contact_list.hpp);
+///   - the contact forces from the positions at t and the velocities at
+///     t - dt/2 (core/force_pass.hpp);
+///   - per particle, the forces summed in a fixed order, the wall contacts,
+///     and the motion advanced (core/sum_and_advance.hpp);
+///   - the rigid bodies advanced from their members (core/body_set.hpp);
+///   - the wall loads summed in a fixed order, the controllers, the walls
+///     moved (core/wall_set.hpp).
+///
+/// Ensembles: the particles may belong to several specimens
+/// (ParticleSet::specimen) that share every kernel launch but never interact:
+/// contacts are searched within a specimen only, and each wall belongs to one
+/// specimen and touches only its particles. Every sum runs in the order a
+/// specimen alone would use, so each specimen follows exactly the trajectory
+/// of its own single run.
 #include <vrut/contact/composite.hpp>
 #include <vrut/contact/concept.hpp>
 #include <vrut/control/velocity.hpp>
@@ -65,7 +66,7 @@ template <class LawSpec, class Space = Kokkos::DefaultExecutionSpace, class Inte
 class Simulation {
  public:
   using dimension = Dim;
-  // The laws' forms in this dimension (the same types in 2D).
+  /// The laws' forms in this dimension (the same types in 2D).
   using Law = in_dimension_t<LawSpec, Dim>;
   using WallLaw = in_dimension_t<WallLawSpec, Dim>;
   static_assert(check_contact_law<Law>(), "vrut::Simulation: Law is not a contact law (see above)");
@@ -114,8 +115,8 @@ class Simulation {
     walls_.rebuild(space_, static_cast<int>(particles_.size()), specimens());
   }
 
-  // --- set-up ---------------------------------------------------------------
-  // Adds a wall that touches the particles of one specimen (0 in a single run).
+  /// --- set-up ---------------------------------------------------------------
+  /// Adds a wall that touches the particles of one specimen (0 in a single run).
   int add_wall(const wall_type& wall, const wall_params_type& params, const controller_params& control = {},
                int specimen = 0) {
     const int w = walls_.add(space_, wall, params, control, specimen, specimens(), static_cast<int>(particles_.size()));
@@ -123,7 +124,7 @@ class Simulation {
     return w;
   }
   int specimens() const { return static_cast<int>(specimen_begin_host_.size()) - 1; }
-  // Particles [first, second) belong to specimen s.
+  /// Particles [first, second) belong to specimen s.
   std::pair<int, int> specimen_range(int s) const { return {specimen_begin_host_.at(s), specimen_begin_host_.at(s + 1)}; }
   int wall_specimen(int w) const { return walls_.specimen_host.at(w); }
   void set_controller(int w, const controller_params& control) { walls_.set_control(w, control); }
@@ -131,24 +132,24 @@ class Simulation {
   int walls() const { return walls_.size(); }
   void set_integrator(const integrator_params& p) { integrator_ = p; }
 
-  // Bonds every particle pair whose gap is at most tolerance (m). Returns the count.
+  /// Bonds every particle pair whose gap is at most tolerance (m). Returns the count.
   int bond_touching_contacts(double tolerance) {
     rebuild_contacts();
     return vrut::bond_touching_contacts<Law>(space_, particles_, contacts_, settings_.box, tolerance);
   }
-  // Bonds the given particle pairs (each i != j), and only those, e.g. the
-  // initially touching pairs of a specimen. Returns how many were in contact
-  // range and got a bond.
+  /// Bonds the given particle pairs (each i != j), and only those, e.g. the
+  /// initially touching pairs of a specimen. Returns how many were in contact
+  /// range and got a bond.
   int bond_pairs(const std::vector<std::pair<int, int>>& pairs) {
     rebuild_contacts();
     return vrut::bond_pairs<Law>(space_, contacts_, pairs);
   }
 
-  // sqrt(m_min / k_max): the time scale of the lightest particle on the
-  // stiffest spring. Multiply by a safety factor (0.1 to 0.3 for dense
-  // packings). With rigid bodies, the time scale of the contacts that exist
-  // instead (contact_timestep): a member's mass is its body's, and a stiff
-  // spring between heavy bodies does not set the step of the light disks.
+  /// sqrt(m_min / k_max): the time scale of the lightest particle on the
+  /// stiffest spring. Multiply by a safety factor (0.1 to 0.3 for dense
+  /// packings). With rigid bodies, the time scale of the contacts that exist
+  /// instead (contact_timestep): a member's mass is its body's, and a stiff
+  /// spring between heavy bodies does not set the step of the light disks.
   double critical_timestep() const {
     if (body_count() > 0) return contact_timestep();
     const double mmin = lightest_mass(space_, particles_.mass);
@@ -156,27 +157,27 @@ class Simulation {
     if (!(k > 0.0)) throw std::logic_error("vrut::Simulation: no positive contact stiffness");
     return std::sqrt(mmin / k);
   }
-  // The smallest sqrt(m / k) over the springs that can act (core/time_step.hpp).
+  /// The smallest sqrt(m / k) over the springs that can act (core/time_step.hpp).
   double contact_timestep() const { return scales_.contact_timestep(); }
-  // contact_timestep's terms, each spring's own; empty without bodies
-  // (critical_timestep then takes the lightest particle on the stiffest spring).
+  /// contact_timestep's terms, each spring's own; empty without bodies
+  /// (critical_timestep then takes the lightest particle on the stiffest spring).
   std::vector<SpringStep> spring_steps() const {
     return body_count() > 0 ? scales_.spring_steps() : std::vector<SpringStep>{};
   }
 
-  // --- rigid bodies ---------------------------------------------------------
+  /// --- rigid bodies ---------------------------------------------------------
   int body_count() const { return static_cast<int>(body_set_.bodies.size()); }
   bodies_type& bodies() { return body_set_.bodies; }
   const bodies_type& bodies() const { return body_set_.bodies; }
-  // Sets body b's velocity and angular velocity, and its members' with it.
+  /// Sets body b's velocity and angular velocity, and its members' with it.
   void set_body_motion(int b, vector velocity, spin angular_velocity) {
     body_set_.set_motion(b, velocity, angular_velocity);
     place_members();
   }
-  // Puts every member where its body says, with the body's motion there.
+  /// Puts every member where its body says, with the body's motion there.
   void place_members() { vrut::place_members(space_, particles_, body_set_.bodies); }
 
-  // --- running --------------------------------------------------------------
+  /// --- running --------------------------------------------------------------
   void step(double dt) {
     if (!(dt > 0.0)) throw std::invalid_argument("vrut::Simulation: dt must be positive");
     // The list is rebuilt once a particle has moved half the skin, so one
@@ -202,8 +203,8 @@ class Simulation {
                            time_, dt, critical_timestep());
   }
 
-  // Lets the law work out, once per time step size, what depends only on its
-  // parameters and dt (contact/concept.hpp, prepare); the results are the same.
+  /// Lets the law work out, once per time step size, what depends only on its
+  /// parameters and dt (contact/concept.hpp, prepare); the results are the same.
   void prepare_laws(double dt) {
     auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), law_params_);
     for (std::size_t a = 0; a < h.extent(0); ++a)
@@ -212,8 +213,8 @@ class Simulation {
     prepared_dt_ = dt;
   }
 
-  // Forces a contact-list rebuild now (it happens by itself when particles
-  // have moved more than half the skin).
+  /// Forces a contact-list rebuild now (it happens by itself when particles
+  /// have moved more than half the skin).
   void rebuild_contacts() { contacts_.rebuild(space_, particles_, settings_.skin); }
   void run(long steps, double dt) {
     for (long s = 0; s < steps; ++s) step(dt);
@@ -237,19 +238,19 @@ class Simulation {
   wall_load_type wall_load(int w) const { return walls_.load_of(w); }
   vector wall_impulse(int w) const { return walls_.impulses().at(w); }
   std::vector<vector> all_wall_impulses() const { return walls_.impulses(); }
-  // Counts of touching (or bonded) contacts and of intact bonds, in all
-  // specimens or in one.
+  /// Counts of touching (or bonded) contacts and of intact bonds, in all
+  /// specimens or in one.
   int active_contacts(int specimen = -1) const { return count(false, specimen); }
   int intact_bonds(int specimen = -1) const { return count(true, specimen); }
 
-  // --- checkpoints ----------------------------------------------------------
-  // Everything that changes while the simulation runs, item by item, for a
-  // checkpoint: a.view(name, v), a.value(name, x) and a.vector(name, v) each
-  // write one item or read it back (io/checkpoint.hpp has both archives), so
-  // one list serves both ways. Read into a Simulation built the same way
-  // (particles, table, settings, walls), it goes on bit for bit as the one
-  // written would have. What the construction fixes (masses, the law table,
-  // the wall owners) is not written; the cell grid is rebuilt with the list.
+  /// --- checkpoints ----------------------------------------------------------
+  /// Everything that changes while the simulation runs, item by item, for a
+  /// checkpoint: a.view(name, v), a.value(name, x) and a.vector(name, v) each
+  /// write one item or read it back (io/checkpoint.hpp has both archives), so
+  /// one list serves both ways. Read into a Simulation built the same way
+  /// (particles, table, settings, walls), it goes on bit for bit as the one
+  /// written would have. What the construction fixes (masses, the law table,
+  /// the wall owners) is not written; the cell grid is rebuilt with the list.
   template <class Archive>
   void visit_state(Archive& a) {
     visit_particles(a, particles_);
@@ -285,7 +286,7 @@ class Simulation {
   long steps_ = 0;
 };
 
-// The engine in 3D: spheres, rectangular plates (Wall3), periodic axes.
+/// The engine in 3D: spheres, rectangular plates (Wall3), periodic axes.
 template <class Law, class Space = Kokkos::DefaultExecutionSpace, class Integrator = CentralDifference,
           class Controller = VelocityControl, class WallLaw = Linear>
 using Simulation3 = Simulation<Law, Space, Integrator, Controller, WallLaw, Dim3>;

@@ -1,6 +1,7 @@
 #pragma once
-// Host-side description of disks (2D) or spheres (3D), the input from which
-// a Simulation is built.
+/// \file
+/// Host-side description of disks (2D) or spheres (3D), the input from which
+/// a Simulation is built.
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -12,13 +13,13 @@ struct ParticleSet {
   std::vector<double> x, y, radius, density;
   std::vector<double> z;  // 3D only: empty for disks, one per sphere
   std::vector<int> group;
-  // Which specimen of an ensemble each disk belongs to (0 for a single run).
-  // Disks of different specimens never touch, whatever their positions, and
-  // each specimen's disks are contiguous and in increasing specimen order.
+  /// Which specimen of an ensemble each disk belongs to (0 for a single run).
+  /// Disks of different specimens never touch, whatever their positions, and
+  /// each specimen's disks are contiguous and in increasing specimen order.
   std::vector<int> specimen;
-  // The rigid body (clump) each disk is a member of, -1 for a free disk.
-  // Members move as one (data/bodies.hpp) and never touch each other; a
-  // body's members lie in one specimen. Bodies are numbered from 0.
+  /// The rigid body (clump) each disk is a member of, -1 for a free disk.
+  /// Members move as one (data/bodies.hpp) and never touch each other; a
+  /// body's members lie in one specimen. Bodies are numbered from 0.
   std::vector<int> body;
 
   std::size_t size() const { return x.size(); }
@@ -43,15 +44,15 @@ struct ParticleSet {
     body.push_back(member_of);
   }
 
-  // A sphere, for a 3D simulation: as add, with the third coordinate.
+  /// A sphere, for a 3D simulation: as add, with the third coordinate.
   void add_sphere(double px, double py, double pz, double r, double rho, int g = 0, int member_of = -1) {
     if (z.size() != x.size()) throw std::invalid_argument("vrut: a set of disks cannot take a sphere");
     add(px, py, r, rho, g, member_of);
     z.push_back(pz);
   }
 
-  // Appends every disk of `other` as a new specimen, its bodies numbered
-  // after the ones already here; returns its index.
+  /// Appends every disk of `other` as a new specimen, its bodies numbered
+  /// after the ones already here; returns its index.
   int append_specimen(const ParticleSet& other) {
     const int s = size() == 0 ? 0 : specimens();
     const int first_body = bodies();
@@ -71,8 +72,8 @@ struct ParticleSet {
   }
 };
 
-// Disks on a hexagonal close packing: rows along x, each row shifted by
-// half a diameter, rows 2r*sqrt(3)/2 apart. Every inner disk touches six.
+/// Disks on a hexagonal close packing: rows along x, each row shifted by
+/// half a diameter, rows 2r*sqrt(3)/2 apart. Every inner disk touches six.
 inline ParticleSet hex_packing(int columns, int rows, double radius, double density,
                                double x0 = 0.0, double y0 = 0.0, int group = 0) {
   if (columns < 1 || rows < 1) throw std::invalid_argument("vrut: hex_packing needs at least one row and column");

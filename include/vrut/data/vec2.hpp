@@ -1,6 +1,7 @@
 #pragma once
-// A 2-vector with arithmetic usable inside Kokkos kernels (Eigen stays on the
-// host: its types are not trivially usable in every device lambda).
+/// \file
+/// A 2-vector with arithmetic usable inside Kokkos kernels (Eigen stays on the
+/// host: its types are not trivially usable in every device lambda).
 #include <Kokkos_Core.hpp>
 
 #include <cmath>
@@ -20,14 +21,14 @@ KOKKOS_INLINE_FUNCTION Vec2 operator*(Vec2 a, double s) { return {s * a.x, s * a
 KOKKOS_INLINE_FUNCTION Vec2& operator+=(Vec2& a, Vec2 b) { a.x += b.x; a.y += b.y; return a; }
 KOKKOS_INLINE_FUNCTION Vec2& operator-=(Vec2& a, Vec2 b) { a.x -= b.x; a.y -= b.y; return a; }
 
-// Component k (0, 1: x, y).
+/// Component k (0, 1: x, y).
 KOKKOS_INLINE_FUNCTION double& component(Vec2& v, int k) { return k == 0 ? v.x : v.y; }
 KOKKOS_INLINE_FUNCTION double component(const Vec2& v, int k) { return k == 0 ? v.x : v.y; }
 
 KOKKOS_INLINE_FUNCTION double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
-// z-component of the 3D cross product of two in-plane vectors.
+/// z-component of the 3D cross product of two in-plane vectors.
 KOKKOS_INLINE_FUNCTION double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-// a rotated by +90 degrees: the in-plane tangent of a normal, and omega x r = omega * perp(r).
+/// a rotated by +90 degrees: the in-plane tangent of a normal, and omega x r = omega * perp(r).
 KOKKOS_INLINE_FUNCTION Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
 KOKKOS_INLINE_FUNCTION double norm(Vec2 a) { return sqrt(a.x * a.x + a.y * a.y); }
 

@@ -1,6 +1,7 @@
 #pragma once
-// Straight walls (segments) and the disk-wall contact geometry, in 2D; the
-// load particles put on a wall, in 2D and 3D (walls3.hpp has the 3D plates).
+/// \file
+/// Straight walls (segments) and the disk-wall contact geometry, in 2D; the
+/// load particles put on a wall, in 2D and 3D (walls3.hpp has the 3D plates).
 #include <vrut/data/dimension.hpp>
 #include <vrut/data/vec2.hpp>
 
@@ -8,9 +9,9 @@
 
 namespace vrut {
 
-// A segment from start to end. Its inward normal (towards the disks it holds)
-// is the direction start->end turned by +90 degrees: a bottom wall runs from
-// left to right, a top plate from right to left.
+/// A segment from start to end. Its inward normal (towards the disks it holds)
+/// is the direction start->end turned by +90 degrees: a bottom wall runs from
+/// left to right, a top plate from right to left.
 struct Wall {
   Vec2 start, end;
   Vec2 velocity;
@@ -23,14 +24,14 @@ KOKKOS_INLINE_FUNCTION Vec2 inward_normal(const Wall& w) {
 
 KOKKOS_INLINE_FUNCTION double length(const Wall& w) { return norm(w.end - w.start); }
 
-// The wall moved by d.
+/// The wall moved by d.
 KOKKOS_INLINE_FUNCTION void translate(Wall& w, Vec2 d) {
   w.start += d;
   w.end += d;
 }
 
-// Closest point of the segment to c; normal from there to c (wall -> disk).
-// Returns the distance. A centre exactly on the segment gets the inward normal.
+/// Closest point of the segment to c; normal from there to c (wall -> disk).
+/// Returns the distance. A centre exactly on the segment gets the inward normal.
 KOKKOS_INLINE_FUNCTION double wall_distance(const Wall& w, Vec2 c, Vec2& normal) {
   const Vec2 d = w.end - w.start;
   double s = dot(c - w.start, d) / dot(d, d);
@@ -42,7 +43,7 @@ KOKKOS_INLINE_FUNCTION double wall_distance(const Wall& w, Vec2 c, Vec2& normal)
   return dist;
 }
 
-// Sum of the forces the particles exert on a wall, and how many touch it.
+/// Sum of the forces the particles exert on a wall, and how many touch it.
 template <class D>
 struct WallLoadIn {
   typename D::vector force;

@@ -1,6 +1,7 @@
 #pragma once
-// The digital specimen: gradation -> stereology -> aggregates -> disks.
-// Same settings and seed, same specimen. Host-only; mm.
+/// \file
+/// The digital specimen: gradation -> stereology -> aggregates -> disks.
+/// Same settings and seed, same specimen. Host-only; mm.
 #include <vrut/data/particle_set.hpp>
 #include <vrut/specimen/packing.hpp>
 #include <vrut/specimen/placement.hpp>
@@ -22,10 +23,10 @@ struct SpecimenSettings {
   std::uint64_t seed = 1;
 };
 
-// A specimen as the protocols see it: the section's size, the stones (their
-// outlines) and the disks. A source fills it: the generator here, or an image
-// (specimen/image.hpp). `settings` and `stereology` are the generator's, and
-// hold the defaults for a specimen from an image.
+/// A specimen as the protocols see it: the section's size, the stones (their
+/// outlines) and the disks. A source fills it: the generator here, or an image
+/// (specimen/image.hpp). `settings` and `stereology` are the generator's, and
+/// hold the defaults for a specimen from an image.
 struct Specimen {
   double width = 0.0, height = 0.0;  // the section, mm
   std::string name;                  // what it is, for messages: "seed 3", "image core.png"
@@ -49,18 +50,18 @@ inline Specimen generate_specimen(const SpecimenSettings& s) {
   out.name = "seed " + std::to_string(s.seed);
   out.settings = s;
   out.stereology = stereology(s.gradation, s.mix);
-  // One stream for the aggregates, one for the voids: changing the void
-  // fraction leaves the aggregates where they were.
+  /// One stream for the aggregates, one for the voids: changing the void
+  /// fraction leaves the aggregates where they were.
   std::mt19937_64 aggregates_rng(s.seed), voids_rng(s.seed ^ 0x9e3779b97f4a7c15ULL);
   out.placement = place_aggregates(out.stereology, s.placement, aggregates_rng);
   out.disks = pack_disks(out.placement, s.placement.width, s.placement.height, s.disk_radius, s.air_voids, voids_rng);
   return out;
 }
 
-// Material groups for the DEM: 0 mastic, 1 aggregate.
+/// Material groups for the DEM: 0 mastic, 1 aggregate.
 enum SpecimenGroup : int { mastic_group = 0, aggregate_group = 1 };
 
-// The disks as DEM input, in metres.
+/// The disks as DEM input, in metres.
 inline ParticleSet to_particle_set(const Specimen& sp, double mastic_density, double aggregate_density) {
   ParticleSet set;
   const double r = sp.disks.radius * 1e-3;

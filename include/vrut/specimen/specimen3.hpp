@@ -1,7 +1,8 @@
 #pragma once
-// The 3D digital specimen: gradation -> polyhedral stones -> spheres on an
-// FCC packing (docs/specimen.md, "In 3D"). Same settings and seed, same
-// specimen. Host-only; mm. Needs the target vrut::stones3.
+/// \file
+/// The 3D digital specimen: gradation -> polyhedral stones -> spheres on an
+/// FCC packing (docs/specimen.md, "In 3D"). Same settings and seed, same
+/// specimen. Host-only; mm. Needs the target vrut::stones3.
 #include <vrut/data/particle_set.hpp>
 #include <vrut/specimen/compaction3.hpp>
 #include <vrut/specimen/fcc_packing.hpp>
@@ -17,9 +18,9 @@
 
 namespace vrut {
 
-// How the stones reach their volume fraction: random addition with local
-// jiggling (placement3.hpp), compaction (compaction3.hpp), or the first and,
-// where it jams short of the fraction (3#), the second.
+/// How the stones reach their volume fraction: random addition with local
+/// jiggling (placement3.hpp), compaction (compaction3.hpp), or the first and,
+/// where it jams short of the fraction (3#), the second.
 enum class StonePacking3 { automatic, random_addition, compaction };
 
 struct SpecimenSettings3 {
@@ -42,8 +43,8 @@ struct Specimen3 {
   SpherePacking spheres;
 };
 
-// The stone (index into placement.stones) that holds a point, or
-// mastic_site; the depth is periodic.
+/// The stone (index into placement.stones) that holds a point, or
+/// mastic_site; the depth is periodic.
 class StoneLocator3 {
  public:
   StoneLocator3(const Placement3& p, double width, double height)
@@ -69,7 +70,7 @@ class StoneLocator3 {
 };
 
 namespace detail {
-// The specimen's box and classes, before its stones.
+/// The specimen's box and classes, before its stones.
 inline Specimen3 specimen3_frame(const SpecimenSettings3& s) {
   validate_gradation(s.gradation, [&](std::size_t i) { return s.gradation.name + " row " + std::to_string(i + 1); });
   Specimen3 out;
@@ -82,9 +83,9 @@ inline Specimen3 specimen3_frame(const SpecimenSettings3& s) {
   return out;
 }
 
-// The spheres, once the stones are placed. One stream for the stones, one
-// for the voids, as in 2D: the voids' does not depend on how the stones
-// were placed.
+/// The spheres, once the stones are placed. One stream for the stones, one
+/// for the voids, as in 2D: the voids' does not depend on how the stones
+/// were placed.
 inline void pack_specimen3_spheres(Specimen3& out) {
   const SpecimenSettings3& s = out.settings;
   std::mt19937_64 voids_rng(s.seed ^ 0x9e3779b97f4a7c15ULL);
@@ -94,8 +95,8 @@ inline void pack_specimen3_spheres(Specimen3& out) {
 }
 }  // namespace detail
 
-// progress(placed, total): the stones' placement, which takes most of the
-// time; compacting(step, total): a compaction's steps, where there is one.
+/// progress(placed, total): the stones' placement, which takes most of the
+/// time; compacting(step, total): a compaction's steps, where there is one.
 inline Specimen3 generate_specimen3(const SpecimenSettings3& s,
                                     const std::function<void(std::size_t, std::size_t)>& progress = {},
                                     const std::function<void(long, long)>& compacting = {}) {
@@ -118,9 +119,9 @@ inline Specimen3 generate_specimen3(const SpecimenSettings3& s,
   return out;
 }
 
-// The specimen of these settings on stones placed before (a resumed run's,
-// io/stones3_state.hpp): the same stones give the same specimen as
-// generate_specimen3 gave. Stones of another depth are refused.
+/// The specimen of these settings on stones placed before (a resumed run's,
+/// io/stones3_state.hpp): the same stones give the same specimen as
+/// generate_specimen3 gave. Stones of another depth are refused.
 inline Specimen3 specimen3_on_stones(const SpecimenSettings3& s, Placement3 stones) {
   Specimen3 out = detail::specimen3_frame(s);
   if (stones.depth != out.depth)
@@ -131,10 +132,10 @@ inline Specimen3 specimen3_on_stones(const SpecimenSettings3& s, Placement3 ston
   return out;
 }
 
-// The spheres as DEM input, in metres; groups as in 2D (SpecimenGroup). A
-// stone across the periodic depth keeps its spheres together: each takes
-// the image nearest its stone's centroid (the engine's positions need not
-// lie in the box), so that a stone's spheres can make one rigid body.
+/// The spheres as DEM input, in metres; groups as in 2D (SpecimenGroup). A
+/// stone across the periodic depth keeps its spheres together: each takes
+/// the image nearest its stone's centroid (the engine's positions need not
+/// lie in the box), so that a stone's spheres can make one rigid body.
 inline ParticleSet to_particle_set(const Specimen3& sp, double mastic_density, double aggregate_density) {
   ParticleSet set;
   const double r = sp.spheres.radius * 1e-3;

@@ -1,31 +1,32 @@
 #pragma once
-// The virtual wheel-tracking (rutting) test, one driver for 2D and 3D
-// (docs/method.md sections 1, 5 and 6): specimens -> DE model -> moulds ->
-// settling under gravity -> a loading plate on each, a dead load ramped up
-// to the wheel's pressure -> loading for the cumulative time under the wheel,
-// reduced by alpha_T -> deformation curves, rut depths, dynamic stability.
-// What differs between a 2D section and a 3D box is the Setup
-// (section.hpp, box.hpp): the particles, the law table, the moulds and the
-// plate; everything else is here. The test's definition is test.hpp, its
-// materials materials.hpp, what it measures result.hpp.
-//
-// Every specimen of an ensemble runs side by side in one Simulation: each
-// kernel launch serves them all, and each specimen gets its own mould and
-// plate and exactly the result of its own single run (the time step is the
-// smallest any of them needs). progress(fraction of the loading time done,
-// steps done). stop() is asked at every sample: when it says true (Ctrl-C,
-// say) the run ends there, with the samples so far and `interrupted` set.
-//
-// Checkpoints (io/checkpoint.hpp has CheckpointFile): checkpoints->due() is
-// asked at every sample, and when it says true, or when the run is stopped,
-// checkpoints->save(visit) writes the state. When checkpoints->resuming(), the
-// run reads its state with checkpoints->load(visit) in place of settling and
-// goes on from there, with the same results as a run never stopped.
-//
-// settling(steps done, settle steps) follows the settling under gravity,
-// every 500 steps (a resumed run does not settle). stop() is first asked at
-// the loading's first sample, so a stop asked for while settling takes
-// effect there, with a checkpoint of the settled specimens.
+/// \file
+/// The virtual wheel-tracking (rutting) test, one driver for 2D and 3D
+/// (docs/method.md sections 1, 5 and 6): specimens -> DE model -> moulds ->
+/// settling under gravity -> a loading plate on each, a dead load ramped up
+/// to the wheel's pressure -> loading for the cumulative time under the wheel,
+/// reduced by alpha_T -> deformation curves, rut depths, dynamic stability.
+/// What differs between a 2D section and a 3D box is the Setup
+/// (section.hpp, box.hpp): the particles, the law table, the moulds and the
+/// plate; everything else is here. The test's definition is test.hpp, its
+/// materials materials.hpp, what it measures result.hpp.
+///
+/// Every specimen of an ensemble runs side by side in one Simulation: each
+/// kernel launch serves them all, and each specimen gets its own mould and
+/// plate and exactly the result of its own single run (the time step is the
+/// smallest any of them needs). progress(fraction of the loading time done,
+/// steps done). stop() is asked at every sample: when it says true (Ctrl-C,
+/// say) the run ends there, with the samples so far and `interrupted` set.
+///
+/// Checkpoints (io/checkpoint.hpp has CheckpointFile): checkpoints->due() is
+/// asked at every sample, and when it says true, or when the run is stopped,
+/// checkpoints->save(visit) writes the state. When checkpoints->resuming(), the
+/// run reads its state with checkpoints->load(visit) in place of settling and
+/// goes on from there, with the same results as a run never stopped.
+///
+/// settling(steps done, settle steps) follows the settling under gravity,
+/// every 500 steps (a resumed run does not settle). stop() is first asked at
+/// the loading's first sample, so a stop asked for while settling takes
+/// effect there, with a checkpoint of the settled specimens.
 #include <vrut/core/energy_check.hpp>
 #include <vrut/core/simulation.hpp>
 #include <vrut/protocol/rutting/checks.hpp>
@@ -55,8 +56,8 @@ struct NoCheckpoints {
   template <class Visit> void load(Visit&&) {}
 };
 
-// A 2D run's pictures of its particles (result.hpp, RuttingSnapshot), item
-// by item, for a checkpoint.
+/// A 2D run's pictures of its particles (result.hpp, RuttingSnapshot), item
+/// by item, for a checkpoint.
 template <class Archive>
 void visit_snapshots(Archive& archive, const std::string& id, std::vector<RuttingSnapshot>& snapshots) {
   int shots = static_cast<int>(snapshots.size());
@@ -109,11 +110,11 @@ std::vector<typename Setup::result_type> run_rutting_test(const Setup& setup, co
   std::vector<double>& top = state.top;
   if (!resuming) run_checking_energy(sim, num.settle_steps, dt, energy_reference, settling);
 
-  // The plates, each on the highest particle under it; the load brings it
-  // down. It is loaded like the wheel itself: a dead load. A PFC servo
-  // (ServoControl) sets its speed from the stiffness of the wall contacts; on
-  // a flowing mastic under stiff aggregate contacts it lags far behind the
-  // target (docs/rutting.md), while the dead load holds the pressure.
+  /// The plates, each on the highest particle under it; the load brings it
+  /// down. It is loaded like the wheel itself: a dead load. A PFC servo
+  /// (ServoControl) sets its speed from the stiffness of the wall contacts; on
+  /// a flowing mastic under stiff aggregate contacts it lags far behind the
+  /// target (docs/rutting.md), while the dead load holds the pressure.
   const double l = wt.plate_length();
   const LoadingPlan plan = loading_plan(wt, num, dt);
   const double t_load = plan.t_load;
@@ -160,7 +161,7 @@ std::vector<typename Setup::result_type> run_rutting_test(const Setup& setup, co
 
   Kokkos::View<vector*, typename Space::memory_space> start("loading_start", setup.particles.size());
   Kokkos::deep_copy(start, sim.particles().position);
-  // Pictures at a third, two thirds and the end of the loading, where the setup keeps them.
+  /// Pictures at a third, two thirds and the end of the loading, where the setup keeps them.
   int next_snapshot = 1;
   auto snapshot = [&](double fraction) {
     if constexpr (Setup::snapshots) setup.snapshot(sim, start, fraction, out);

@@ -1,6 +1,7 @@
 #pragma once
-// What the rutting test measures: the deformation curve, the snapshots,
-// and the rut depth and dynamic stability worked out from the curve.
+/// \file
+/// What the rutting test measures: the deformation curve, the snapshots,
+/// and the rut depth and dynamic stability worked out from the curve.
 #include <vrut/protocol/rutting/skeleton_record.hpp>
 #include <vrut/protocol/rutting/test.hpp>
 #include <vrut/protocol/rutting/timestep_report.hpp>
@@ -29,17 +30,17 @@ struct RuttingResult {
   std::vector<int> group;
   double deformation_at_ds_start = 0.0, deformation_final = 0.0;  // m
   double dynamic_stability = 0.0;          // passes / mm
-  // The smallest deformation change over the DS window that the curve
-  // resolves (m; finish_deformation). Where the change is below it, the DS
-  // is reported as a lower bound, as a laboratory reports a DS past its
-  // gauge: dynamic_stability is then the DS that change would give.
+  /// The smallest deformation change over the DS window that the curve
+  /// resolves (m; finish_deformation). Where the change is below it, the DS
+  /// is reported as a lower bound, as a laboratory reports a DS past its
+  /// gauge: dynamic_stability is then the DS that change would give.
   double deformation_resolution = 0.0;
   bool dynamic_stability_is_lower_bound = false;
   double plate_x0 = 0.0, plate_x1 = 0.0, plate_y_final = 0.0;     // m
   std::size_t particles = 0;
   int contacts = 0, bonds = 0;
-  // At the end: the stones holding disks, and the pairs of them that touch
-  // (some disk of one overlaps some disk of the other): the skeleton.
+  /// At the end: the stones holding disks, and the pairs of them that touch
+  /// (some disk of one overlaps some disk of the other): the skeleton.
   int stones = 0, stone_pairs_touching = 0;
   SkeletonRecord skeleton;                 // what holds the specimen up (protocol/rutting/skeleton.hpp)
   bool interrupted = false;                // stopped early on request: the samples so far, no DS
@@ -47,29 +48,29 @@ struct RuttingResult {
   double dt = 0.0, wall_seconds = 0.0;
   TimestepReport time_step;  // which class of contact sets dt (before the safety factor), and the next
 
-  // Stones touching per stone at the end: each touching pair counts for both.
+  /// Stones touching per stone at the end: each touching pair counts for both.
   double stones_touching_per_stone() const {
     return stones > 0 ? 2.0 * stone_pairs_touching / stones : std::numeric_limits<double>::quiet_NaN();
   }
-  // The share of the final rut that came after the DS window's start (minute
-  // 45 of 60): (d60 - d45) / d60, the curve's late creep.
+  /// The share of the final rut that came after the DS window's start (minute
+  /// 45 of 60): (d60 - d45) / d60, the curve's late creep.
   double late_creep_share() const {
     return deformation_final > 0.0 ? (deformation_final - deformation_at_ds_start) / deformation_final
                                    : std::numeric_limits<double>::quiet_NaN();
   }
 };
 
-// Deformation at the DS start minute (interpolated), at the end, and the DS
-// (method.md section 1: the passes between the DS start and the end over the
-// deformation between them).
-//
-// The resolution: the plate jitters about the curve's trend (its dead load
-// and the disks under it vibrate a little). The DS is a difference of two
-// points of the curve, each off the trend by about s, the residual standard
-// deviation of a least-squares line through the samples in the DS window; so
-// a change below 2 sqrt(2) s (two standard deviations of a difference) is
-// not resolved, and the DS is reported as above the value such a change
-// gives. Fewer than three samples in the window: no resolution is known (0).
+/// Deformation at the DS start minute (interpolated), at the end, and the DS
+/// (method.md section 1: the passes between the DS start and the end over the
+/// deformation between them).
+///
+/// The resolution: the plate jitters about the curve's trend (its dead load
+/// and the disks under it vibrate a little). The DS is a difference of two
+/// points of the curve, each off the trend by about s, the residual standard
+/// deviation of a least-squares line through the samples in the DS window; so
+/// a change below 2 sqrt(2) s (two standard deviations of a difference) is
+/// not resolved, and the DS is reported as above the value such a change
+/// gives. Fewer than three samples in the window: no resolution is known (0).
 inline void finish_deformation(RuttingResult& res, const WheelTracking& wt) {
   auto deformation_at = [&](double minute) {
     for (std::size_t k = 1; k < res.samples.size(); ++k)
