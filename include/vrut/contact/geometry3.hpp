@@ -78,13 +78,13 @@ KOKKOS_INLINE_FUNCTION ContactGeometry3 plane_sphere(Vec3 point, Vec3 plane_norm
 struct ContactTurn {
   Vec3 new_normal, normal_sum;  // n', n + n'
   double inverse_one_plus_cosine = 0.0, twist = 0.0;
-  KOKKOS_INLINE_FUNCTION ContactTurn(Vec3 old_normal, Vec3 normal, double turn_about_normal)
+  KOKKOS_FORCEINLINE_FUNCTION ContactTurn(Vec3 old_normal, Vec3 normal, double turn_about_normal)
       : new_normal(normal), normal_sum(old_normal + normal), twist(turn_about_normal) {
     const double one_plus_cosine = 1.0 + dot(old_normal, normal);
     // Normals half a turn apart have no least rotation: a contact never turns so far in a step.
     inverse_one_plus_cosine = one_plus_cosine > 1e-12 ? 1.0 / one_plus_cosine : 0.0;
   }
-  KOKKOS_INLINE_FUNCTION Vec3 operator()(Vec3 shear) const {
+  KOKKOS_FORCEINLINE_FUNCTION Vec3 operator()(Vec3 shear) const {
     const double length2 = dot(shear, shear);
     if (!(length2 > 0.0)) return Vec3{};
     Vec3 v = shear - (dot(shear, new_normal) * inverse_one_plus_cosine) * normal_sum;

@@ -47,7 +47,7 @@ struct Geometry<Dim2> {
   // A contact between disks i and j, g's normal and overlap set: the
   // increments, the law, and the load.
   template <class Law, class Particles>
-  KOKKOS_INLINE_FUNCTION static ContactLoadIn<Dim2> pair_load(const typename Law::params_type& p,
+  KOKKOS_FORCEINLINE_FUNCTION static ContactLoadIn<Dim2> pair_load(const typename Law::params_type& p,
                                                              typename Law::state_type& s, ContactGeometryIn<Dim2>& g,
                                                              Vec2, const Particles& ps, int i, int j, double dt) {
     const Vec2 t = perp(g.normal);
@@ -70,7 +70,7 @@ struct Geometry<Dim2> {
   // but for its velocity), g's normal (wall -> disk) and overlap set; the
   // contact point lies on the wall, arm = r - overlap from the centre.
   template <class Law, class Particles>
-  KOKKOS_INLINE_FUNCTION static WallPushIn<Dim2> wall_push(const typename Law::params_type& p,
+  KOKKOS_FORCEINLINE_FUNCTION static WallPushIn<Dim2> wall_push(const typename Law::params_type& p,
                                                            typename Law::state_type& s, ContactGeometryIn<Dim2>& g,
                                                            Vec2 wall_velocity, const Particles& ps, int i, double dt) {
     const double arm = ps.radius(i) - g.overlap;

@@ -64,7 +64,7 @@ struct Geometry<Dim3> {
   // nearest image) and g's normal and overlap set: the stored shear turned
   // into the contact's new frame, the increments, the law, and the load.
   template <class Law, class Particles>
-  KOKKOS_INLINE_FUNCTION static ContactLoadIn<Dim3> pair_load(const typename Law::params_type& p,
+  KOKKOS_FORCEINLINE_FUNCTION static ContactLoadIn<Dim3> pair_load(const typename Law::params_type& p,
                                                              typename Law::state_type& s, ContactGeometryIn<Dim3>& g,
                                                              Vec3 d, const Particles& ps, int i, int j, double dt) {
     const double arm_i = ps.radius(i) - 0.5 * g.overlap, arm_j = ps.radius(j) - 0.5 * g.overlap;
@@ -98,7 +98,7 @@ struct Geometry<Dim3> {
   // rest but for its velocity), g's normal (plate -> sphere) and overlap set;
   // the contact point lies on the plate, arm = r - overlap from the centre.
   template <class Law, class Particles>
-  KOKKOS_INLINE_FUNCTION static WallPushIn<Dim3> wall_push(const typename Law::params_type& p,
+  KOKKOS_FORCEINLINE_FUNCTION static WallPushIn<Dim3> wall_push(const typename Law::params_type& p,
                                                            typename Law::state_type& s, ContactGeometryIn<Dim3>& g,
                                                            Vec3 wall_velocity, const Particles& ps, int i, double dt) {
     const double arm = ps.radius(i) - g.overlap;
