@@ -237,6 +237,8 @@ rutting)
   expect "2" "too small for its stones" -- "${small3[@]}" --depth-mm 20 --out bad3
   expect "2" "--plate patch is for the 3D test" -- --plate patch --out bad3
   expect "2" "--section transverse and --plate patch are two plates" -- "${small3[@]}" --section transverse --plate patch --out bad3
+  expect "2" "--stone-shear-film: 'soap' is none, binder or a thickness" -- --stone-shear-film soap --out bad3
+  expect "2" "relaxes through its binder film with the film per contact" -- --stone-film mean --stone-shear-film binder --out bad3
   expect "2" "patch needs a box at least 100 mm deep.*give --depth-mm 101.82" -- "${small3[@]}" --plate patch --out bad3
   expect "1 2" "plate" -- "${small3[@]}" --plate disk --out bad3
   expect "1 2" "is model, none or the filler's Rigden voids" -- "${small3[@]}" --mastic-by-filler 35 --out bad3
