@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Links that cannot rot: every relative link in README.md, CHANGELOG.md and
-# docs/ names a file that exists, and so does every repository path cited in
-# those pages and in the comments of include/ (a path under docs/, tests/,
-# examples/, scripts/, benchmarks/, python/, cmake/ or include/, or one
-# under include/vrut/ written as its folder and name, protocol/rutting/box.hpp
-# say). No page or comment cites SPEC.md, which users do not have, or an
-# issue by its number, which they cannot follow.
+# docs/ names a file that exists, and a heading there where it names one
+# (#anchor, as GitHub spells a heading); every repository path cited in
+# those pages and in the comments of include/ exists (a path under docs/,
+# tests/, examples/, scripts/, benchmarks/, python/, cmake/ or include/, or
+# one under include/vrut/ written as its folder and name,
+# protocol/rutting/box.hpp say); no header carries a date. No page or
+# comment cites SPEC.md, which users do not have, or an issue by its
+# number, which they cannot follow.
 #   Usage: doc_links.sh SOURCE_DIR
 #          doc_links.sh --self-test SOURCE_DIR  (shows that it fails on a broken link of each kind)
 set -uo pipefail
@@ -16,12 +18,14 @@ if [[ ${1:-} == --self-test ]]; then
   trap 'rm -rf "$tree"' EXIT
   mkdir -p "$tree/docs" "$tree/include/vrut/core" "$tree/tests"
   printf '# t\nSee [the guide](docs/guide.md#start) and `include/vrut/core/sim.hpp`.\n' >"$tree/README.md"
-  printf '# guide\nBack to [the readme](../README.md); `core/sim.hpp`.\n' >"$tree/docs/guide.md"
+  printf '# guide\n## Start\nBack to [the readme](../README.md#t); `core/sim.hpp`.\n' >"$tree/docs/guide.md"
   printf '#pragma once\n// As docs/guide.md says.\n' >"$tree/include/vrut/core/sim.hpp"
   "$me" "$tree" >"$tree/clean.out" || { echo "FAIL: a clean tree fails: $(cat "$tree/clean.out")"; exit 1; }
   failures=0
   for bad in 'README.md|[gone](docs/gone.md)' 'docs/guide.md|`tests/gone.sh`' 'include/vrut/core/sim.hpp|// see docs/gone.md' \
-             'docs/guide.md|`core/gone.hpp`' 'README.md|as SPEC.md says' 'docs/guide.md|(issue 44)'; do
+             'docs/guide.md|`core/gone.hpp`' 'README.md|as SPEC.md says' 'docs/guide.md|(issue 44)' \
+             'README.md|[gone](docs/guide.md#gone)' 'docs/guide.md|[gone](#gone)' \
+             'include/vrut/core/sim.hpp|// the default since 2026-12-02'; do
     file=${bad%%|*} line=${bad#*|}
     cp "$tree/$file" "$tree/keep"
     printf '%s\n' "$line" >>"$tree/$file"
@@ -64,6 +68,49 @@ for header in $headers; do
   done < <(grep -nE '^\s*//' "$header" | grep -oE "^[0-9]+:|$repo_path\.(hpp|cpp|sh|py|md)" |
            awk '/:$/ { n = $0; next } { print n $0 }')
 done
+# Anchors: [text](page.md#heading) and [text](#heading) name a heading of
+# that page, as GitHub spells it: lower case, inline markup dropped, every
+# character but letters, digits, _, - and space dropped, spaces as -, and
+# -1, -2 after a repeated one.
+python=$(command -v /usr/bin/python3 || command -v python3) || fail "python3 is needed to check the anchors"
+[[ -n $python ]] && "$python" - $pages <<'PY' | tee /tmp/doc_anchors.$$
+import os, re, sys
+
+def anchors(path, cache={}):
+    if path not in cache:
+        found, seen, fence = set(), {}, False
+        for line in open(path, encoding="utf-8"):
+            if line.startswith("```"):
+                fence = not fence
+            m = None if fence else re.match(r"^#{1,6}\s+(.*?)\s*#*\s*$", line)
+            if not m:
+                continue
+            text = re.sub(r"\[([^\]]*)\]\([^)]*\)", r"\1", m.group(1)).replace("`", "")
+            slug = re.sub(r"[^\w\- ]", "", text.lower()).replace(" ", "-")
+            seen[slug] = seen.get(slug, -1) + 1
+            found.add(slug if seen[slug] == 0 else f"{slug}-{seen[slug]}")
+        cache[path] = found
+    return cache[path]
+
+for page in sys.argv[1:]:
+    for n, line in enumerate(open(page, encoding="utf-8"), 1):
+        for target in re.findall(r"\]\(([^) ]+)\)", line):
+            if "://" in target or "#" not in target:
+                continue
+            name, anchor = target.split("#", 1)
+            path = os.path.normpath(os.path.join(os.path.dirname(page), name)) if name else page
+            if path.endswith(".md") and os.path.exists(path) and anchor not in anchors(path):
+                print(f"FAIL: {page}:{n}: no heading '#{anchor}' in {path}")
+PY
+[[ -s /tmp/doc_anchors.$$ ]] && bad=1
+rm -f /tmp/doc_anchors.$$
+# The headers say why, not when: no date in them but a study page's name.
+for header in $headers; do
+  sed -E 's#studies/[0-9]{4}-[0-9]{2}-[0-9]{2}##g' "$header" | grep -nE '\b20[0-9]{2}-[0-9]{2}-[0-9]{2}\b' |
+    while IFS=: read -r n _; do echo "FAIL: $header:$n: carries a date (say why, not when)"; done
+done | tee /tmp/doc_dates.$$ | head -n 50
+[[ -s /tmp/doc_dates.$$ ]] && bad=1
+rm -f /tmp/doc_dates.$$
 for file in $pages $headers; do
   grep -nE 'SPEC\.md' "$file" | while IFS=: read -r n _; do echo "FAIL: $file:$n: cites SPEC.md, which users do not have"; done
   grep -niE '\b(issue|issues) #?[0-9]+' "$file" | while IFS=: read -r n _; do echo "FAIL: $file:$n: cites an issue by its number"; done

@@ -98,13 +98,13 @@ inline void resolve_model_settings(std::map<std::string, std::string>& settings,
     settings["mastic-by-filler"] = summary->at("mastic_by_filler").get<std::string>();  // as typed, compared as a number
   else if (settings.count("mastic-by-filler") == 0)
     settings["mastic-by-filler"] = "none";
-  // The time step's safety: -1 is the dimension's since 2026-12-06 (0.3 in
-  // 2D, 0.5 in 3D), which summary.json records as resolved; before, the
-  // option's default was 0.3 in both, written out as such.
+  // The time step's safety: -1 is the dimension's (0.3 in 2D, 0.5 in 3D),
+  // which summary.json records as resolved; an older summary has the
+  // option's earlier default, 0.3 in both, written out as such.
   if (summary != nullptr && summary->contains("timestep_safety"))
     settings["timestep-safety"] = summary->at("timestep_safety").dump();
-  // The settling's steps: -1 is as long as 4,000 steps at 0.3 since
-  // 2026-12-06 (4,000 at 0.3), which summary.json records as resolved.
+  // The settling's steps: -1 is as long as 4,000 steps at 0.3, which
+  // summary.json records as resolved.
   if (summary != nullptr && summary->contains("settle_steps"))
     settings["settle-steps"] = summary->at("settle_steps").dump();
 }

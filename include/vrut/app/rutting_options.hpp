@@ -24,7 +24,7 @@
 
 namespace vrut::app {
 
-// The 3D model (vrut-rutting --dim 3) since 2026-12-06, where its options are
+// The 3D model (vrut-rutting --dim 3), where its options are
 // left at their defaults: the stones' friction 0.6, its one constant, fitted
 // on 2#'s eight specimens at 1 mm spheres, and each mix's mastic stiffened by
 // its filler at Rigden voids 0.35, on no fitted constant (docs/validation.md,
@@ -223,7 +223,7 @@ inline void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--stone-film", o.stone_film,
                  "how two stones meet: per-contact (each pair through its own mastic film, sized from where its disks "
                  "lie inside the stones' outlines, then the stone law once it squeezes out), mean (one film of "
-                 "--film-gap for every pair), none (method.md's stone law alone, the model before 2026-12-02)")
+                 "--film-gap for every pair), none (method.md's stone law alone, the older 2D model's)")
       ->check(CLI::IsMember({"per-contact", "mean", "none"}))->capture_default_str()->group("Materials");
   app.add_option("--film-gap", mat.film_gap,
                  "--stone-film mean: the film's thickness, in disk diameters (0.40: the mean gap between two stones' "

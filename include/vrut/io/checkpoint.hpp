@@ -29,10 +29,12 @@
 
 namespace vrut {
 
-// 2 (2026-12-03): the loading's time step kept, and checked on resume.
-// 3 (2026-12-04): each specimen's skeleton record (the films at the start,
+// The format's versions, each refusing the older files whose bytes it reads
+// differently:
+// 2: the loading's time step kept, and checked on resume.
+// 3: each specimen's skeleton record (the films at the start,
 // the early load path: protocol/rutting/skeleton_record.hpp).
-// 4 (2026-12-05): a Choice's contact slot holds the state of the law that
+// 4: a Choice's contact slot holds the state of the law that
 // acts there only (contact/choice.hpp), so the contact state's bytes changed;
 // a checkpoint of format 3 is refused by its format, not by its item sizes.
 inline constexpr int checkpoint_format = 4;

@@ -27,8 +27,8 @@ struct RuttingMaterials {
   BurgersMacro mastic;                  // at the test temperature, 60 C
   double mastic_nu = 0.35;
   bool calibrated_conversion = false;   // MicroConversion::calibrated instead of the method's rules
-  // The calibration on mix 2# (docs/validation.md, "The frozen model of
-  // 2026-12-02"): with the film per contact, 4 brings 2# to the
+  // The calibration on mix 2# (docs/validation.md, "The 2D model,
+  // calibrated on 2#"): with the film per contact, 4 brings 2# to the
   // laboratory's rut. It is a fitted constant, declared as such. (2, the
   // value frozen before with no film, reads the micro parameters as two
   // Burger's disks in series, one of them rigid: docs/method.md section 6;
@@ -44,10 +44,10 @@ struct RuttingMaterials {
   double stone_friction = -1.0;
   // How two stones meet (docs/validation.md, the gradation study): the
   // contact between disks of two different aggregates.
-  //   none: method.md's rigid linear stone law (the model until 2026-12-02);
+  //   none: method.md's rigid linear stone law (the older 2D model's);
   //   mean: a mastic film of film_gap diameters (contact/film.hpp; no bond,
   //         stone friction) that squeezes out to the stone law;
-  //   per_contact (the default since 2026-12-02): each pair of stones meets
+  //   per_contact (the default): each pair of stones meets
   //         through its own film: one diameter less the reaches of its two
   //         disks, how far each centre lies inside its stone's outline
   //         towards the other stone (specimen/stone_reach.hpp), in

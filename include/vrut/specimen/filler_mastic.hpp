@@ -1,6 +1,6 @@
 #pragma once
 // The filler's stiffening of the binder, by mix: part of the frozen 3D
-// model since 2026-12-06 (protocol/rutting/model3.hpp), not of the 2D
+// model (protocol/rutting/model3.hpp), not of the 2D
 // model; screened as a candidate (docs/studies/2026-12-05-mastic-by-mix.md).
 //
 // The method gives every mix one mastic. At one binder content a mix with

@@ -42,7 +42,7 @@ struct RuttingNumerics {
   }
 };
 
-// The 3D test's time-step safety since 2026-12-06 (vrut-rutting --dim 3 at
+// The 3D test's time-step safety (vrut-rutting --dim 3 at
 // its defaults; RuttingNumerics' 0.3 stays 2D's and the library's). In 3D
 // the step is set by one stiff spring on a light mass (the mould's and the
 // plate's stone spring on a mastic sphere, or two stones' on a small
