@@ -84,7 +84,12 @@ py::dict rutting(const std::vector<std::string>& args, const std::string& out, c
   app::RunOptions given;
   CLI::App cli("vrut.rutting");
   app::add_run_options(cli, given);
-  parse(cli, args);
+  // The folder is an option of the run as the command line's --out is, so
+  // that the checkpoint's options read back as vrut-rutting --resume reads
+  // them, and config.ini names it.
+  std::vector<std::string> argv = args;
+  if (!out.empty()) argv.insert(argv.end(), {"--out", out});
+  parse(cli, argv);
   given.io.images = app::image_cli::given_images(given.io);
   given.width_given = cli.count("--width-mm") > 0;
   given.voids_given = cli.count("--air-voids") > 0;
@@ -97,8 +102,6 @@ py::dict rutting(const std::vector<std::string>& args, const std::string& out, c
       throw std::invalid_argument("'" + out + "' holds the checkpoint of an unfinished run: go on with it with "
                                   "vrut-rutting --resume " + out + ", or start again with force=True");
     nlohmann::json header;
-    std::vector<std::string> argv = args;
-    argv.insert(argv.end(), {"--out", out});
     header["argv"] = argv;
     header["config"] = cli.config_to_str(true, false);
     header["config_with_help"] = config_text;
@@ -113,8 +116,8 @@ py::dict rutting(const std::vector<std::string>& args, const std::string& out, c
       progress(fraction);
     };
   int argc = 0;
-  char** argv = nullptr;
-  const app::ranks::Session one_rank(argc, argv);
+  char** no_argv = nullptr;
+  const app::ranks::Session one_rank(argc, no_argv);
   vrut::CheckpointFile* file = checkpoint ? &*checkpoint : nullptr;
   const app::RuttingOutcome outcome = run_outside_python([&] {
     return given.dim == 3 ? app::run_rutting_3d(given, file, config_text, one_rank, hooks)

@@ -2,6 +2,7 @@
 to the last bit, and the same errors."""
 import json
 import os
+import re
 import signal
 import subprocess
 import threading
@@ -30,9 +31,16 @@ def without_clock(summary):
     return {k: v for k, v in summary.items() if k not in CLOCK}
 
 
-def test_same_numbers_and_files_as_the_command_line(cli, tmp_path):
-    done, out = run_cli(cli, SMALL_ARGS, tmp_path)
+@pytest.fixture(scope="module")
+def uninterrupted(cli, tmp_path_factory):
+    """The command line's SMALL run, to its end: the folder of its results."""
+    done, out = run_cli(cli, SMALL_ARGS, tmp_path_factory.mktemp("uninterrupted"))
     assert done.returncode == 0, done.stderr
+    return out
+
+
+def test_same_numbers_and_files_as_the_command_line(uninterrupted, tmp_path):
+    out = uninterrupted
     expected = json.loads((out / "summary.json").read_text())
     run = vrut.rutting(out=tmp_path / "py", **SMALL)
     # Every double of summary.json, as the command line wrote it (JSON keeps 17 digits).
@@ -51,6 +59,21 @@ def test_same_numbers_and_files_as_the_command_line(cli, tmp_path):
     assert numpy.array_equal(run.minutes, table["minutes"])
     assert numpy.array_equal(run.deformation_mm, table["deformation_mm"])
     assert run.deformation_mm[-1] == expected["rut_depth_mm"]
+
+
+def test_a_3d_run_is_the_command_lines(cli, tmp_path):
+    # A small box of 2 mm spheres (about 1,500 of them), a short settling and
+    # a large time shift: the 3D path end to end, as the command line runs it.
+    # 1#'s stones place in a fraction of a second here, 2#'s take seconds.
+    small3 = dict(dim=3, gradation=1, width_mm=40, sphere_radius_mm=2, shift=2e5, settle_steps=300, seed=1, threads=1)
+    args = [a for k, v in small3.items() for a in ("--" + k.replace("_", "-"), str(v))]
+    done, out = run_cli(cli, args, tmp_path)
+    assert done.returncode == 0, done.stderr
+    expected = json.loads((out / "summary.json").read_text())
+    assert expected["dimension"] == 3
+    run = vrut.rutting(out=tmp_path / "py", **small3)
+    assert without_clock(run.summary) == without_clock(expected)
+    assert (tmp_path / "py" / "deformation.csv").read_bytes() == (out / "deformation.csv").read_bytes()
 
 
 def test_float_options_reach_the_run_exactly(cli, tmp_path):
@@ -127,26 +150,43 @@ def test_progress_reaches_the_end():
     assert all(a <= b for a, b in zip(seen, seen[1:]))
 
 
-def test_ctrl_c_stops_cleanly_with_a_checkpoint(tmp_path):
-    python_handler = signal.getsignal(signal.SIGINT)
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM], ids=["ctrl-c", "sigterm"])
+def test_a_stopped_run_leaves_a_checkpoint_the_command_line_resumes(cli, uninterrupted, tmp_path, signum):
+    python_handler = signal.getsignal(signum)
     started = threading.Event()
 
     def progress(fraction):
         if not started.is_set():
             started.set()
-            os.kill(os.getpid(), signal.SIGINT)  # as Ctrl-C would, while the loading runs
+            os.kill(os.getpid(), signum)  # as Ctrl-C or a scheduler would, while the loading runs
 
-    with pytest.raises(KeyboardInterrupt, match="vrut-rutting --resume") as raised:
+    # Ctrl-C: KeyboardInterrupt with the way on; SIGTERM: the command line's exit code, 143.
+    stop = KeyboardInterrupt if signum == signal.SIGINT else SystemExit
+    with pytest.raises(stop, match="vrut-rutting --resume" if stop is KeyboardInterrupt else "^143$") as raised:
         vrut.rutting(out=tmp_path / "stopped", progress=progress, **SMALL)
     summary = json.loads((tmp_path / "stopped" / "summary.json").read_text())
     assert summary["interrupted"] is True and summary["minutes_done"] < 60
     assert raised.value.run.summary["minutes_done"] == summary["minutes_done"]
     assert (tmp_path / "stopped" / "checkpoint.vrut").exists()
-    # Python has its own Ctrl-C back: the signal now interrupts Python.
-    assert signal.getsignal(signal.SIGINT) is python_handler
-    with pytest.raises(KeyboardInterrupt):
-        os.kill(os.getpid(), signal.SIGINT)
-        time.sleep(5)
+    # Python has its own handler back: the signal now reaches Python.
+    assert signal.getsignal(signum) is python_handler
+    if signum == signal.SIGINT:
+        with pytest.raises(KeyboardInterrupt):
+            os.kill(os.getpid(), signal.SIGINT)
+            time.sleep(5)
+    # The command line goes on from the checkpoint, not from the start, to
+    # the uninterrupted run's results to the bit.
+    done = subprocess.run([cli, "--resume", str(tmp_path / "stopped")], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    first = re.search(r"resumed: minute ([0-9.]+) of 60", done.stderr)
+    assert first, done.stderr
+    assert 0.0 < summary["minutes_done"] <= float(first.group(1))
+    resumed = json.loads((tmp_path / "stopped" / "summary.json").read_text())
+    expected = json.loads((uninterrupted / "summary.json").read_text())
+    assert resumed["rut_depth_mm"] == expected["rut_depth_mm"]
+    assert resumed["dynamic_stability_passes_per_mm"] == expected["dynamic_stability_passes_per_mm"]
+    assert (tmp_path / "stopped" / "deformation.csv").read_bytes() == (uninterrupted / "deformation.csv").read_bytes()
+    assert not (tmp_path / "stopped" / "checkpoint.vrut").exists()
 
 
 def test_one_kokkos_runtime_per_process():
