@@ -6,7 +6,7 @@
 # Interrupted (Ctrl-C to the ranks in 2D and 3D, SIGTERM to mpirun in 2D),
 # every rank's checkpoint is kept and the resume on two ranks ends as the
 # run never stopped; a resume on one rank, and more ranks than seeds, are
-# refused.
+# refused; one rank failing alone (its checkpoint damaged) ends the job.
 # Skipped (77) only where MPI is not here: this build left it out on purpose
 # (mpi-left-out: CMAKE_DISABLE_FIND_PACKAGE_MPI, as sanitize.sh does), or
 # CMake found none and none is installed (no mpirun, mpiexec or mpicxx on
@@ -109,6 +109,16 @@ interrupted_and_resumed() {  # DIR WHOLE_DIR SIGNAL ranks|mpirun WHAT ARGS...
   if [[ $code -eq 2 ]] && grep -q "run on 2 rank(s).*mpirun -np 2 vrut-rutting --resume $dir" "$dir.one.out"; then
     echo "ok:   $what: a resume on one rank refused"
   else echo "FAIL: $what: a resume on one rank -> exit $code: $(cat "$dir.one.out")"; failures=$((failures + 1)); fi
+  # One rank failing alone (its checkpoint damaged) ends the whole job with
+  # its message and a non-zero exit, within a minute: the other rank does
+  # not wait for it for ever, and the folder keeps its files.
+  cp -r "$dir" "$dir.damaged"
+  head -c 1000 "$dir/checkpoint-rank-1-of-2.vrut" >"$dir.damaged/checkpoint-rank-1-of-2.vrut"
+  timeout 60 mpirun -np 2 -x OMP_NUM_THREADS=1 -x OMP_PROC_BIND "$exe" --resume "$dir.damaged" >"$dir.damaged.out" 2>&1; code=$?
+  if [[ $code -ne 0 && $code -ne 124 ]] && grep -q "checkpoint-rank-1-of-2.vrut is damaged" "$dir.damaged.out" &&
+     [[ -s $dir.damaged/checkpoint-rank-0-of-2.vrut ]]; then
+    echo "ok:   $what: one rank failing alone ends the job (exit $code)"
+  else echo "FAIL: $what: one rank's damaged checkpoint -> exit $code: $(grep -v '^\s*$' "$dir.damaged.out" | head -n 3)"; failures=$((failures + 1)); fi
   mpirun -np 2 -x OMP_NUM_THREADS=1 -x OMP_PROC_BIND "$exe" --resume "$dir" >"$dir.resumed.out" 2>&1 ||
     { echo "FAIL: $what: the resume failed: $(tail -n 5 "$dir.resumed.out")"; failures=$((failures + 1)); }
   grep -q "^resumed: minute" "$dir.resumed.out" ||
