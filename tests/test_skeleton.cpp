@@ -232,3 +232,61 @@ TEMPLATE_LIST_TEST_CASE("3D: the load path across a cut, the same three columns 
   CHECK(beside.load.stone_film == 0.0);
   CHECK(beside.load.mastic == 0.0);
 }
+
+// A contact counts where it acts, not where its particles are: two stone
+// disks (two stones through a film of zero thickness, so on the stones'
+// spring, which bears on the whole overlap from the first step) leaning at 45 degrees across the cut, overlapping by 0.09 mm, their
+// centres 1.35 mm apart in x and in y, so the contact's point lies half way
+// between them in x. A plate over that point takes the pair's whole load,
+// and a plate over either centre alone, but not the point, takes none of it
+// (filtering on a particle's position would give the reverse). In 3D the
+// same holds across the periodic depth: two spheres near the box's two
+// faces meet through the boundary, at depth 0, not at mid-depth, where the
+// mean of their stored depths lies.
+TEST_CASE("the load path across a cut counts a contact at its point: a leaning pair, and one across the periodic depth",
+          "[physics][skeleton]") {
+  using Space = Kokkos::DefaultHostExecutionSpace;
+  Columns c = three_columns();  // its table alone: groups 1 and 2 meet on the stones' spring
+  const double reach = 1.35e-3, base = 3e-3;  // |d| = 1.909 mm, two radii 2 mm
+  vrut::RuttingMaterials m;
+  vrut::SkeletonCut cut;
+  cut.height = base + 0.5 * reach;
+  cut.diameter = 2.0 * r;
+  const std::vector<int> two_stones{0, 1};
+
+  vrut::ParticleSet pair;
+  pair.add(10e-3, base, r, m.aggregate_density, 1);
+  pair.add(10e-3 + reach, base + reach, r, m.aggregate_density, 2);
+  vrut::SimulationSettings flat;
+  flat.thickness = t;
+  flat.gravity = {0.0, 0.0};
+  ColumnsSimulation<Space> leaning(pair, c.table, flat, {}, Space());
+  leaning.run(1, 0.3 * leaning.critical_timestep());  // the contact's load, pushing the pair apart
+  auto snapshot = [&](auto& sim, double x0, double x1, vrut::DepthBand band = {}) {
+    cut.x0 = x0, cut.x1 = x1, cut.depth = band;
+    return vrut::skeleton_snapshot(sim, c.table, 0, cut, two_stones).load.stone_spring;
+  };
+  const double whole = snapshot(leaning, 0.0, 40e-3);
+  CHECK(whole > 0.0);  // the lower disk pushes the upper one up, as under a weight
+  const double point = 10e-3 + 0.5 * reach;
+  CHECK(snapshot(leaning, point - 0.2e-3, point + 0.2e-3) == whole);
+  CHECK(snapshot(leaning, 10e-3 - 0.2e-3, 10e-3 + 0.2e-3) == 0.0);                  // the lower centre alone
+  CHECK(snapshot(leaning, 10e-3 + reach - 0.2e-3, 10e-3 + reach + 0.2e-3) == 0.0);  // the upper centre alone
+
+  const double depth = 10e-3, dz = 0.6 * r, near_face = 0.5 * dz;
+  vrut::ParticleSet across;
+  across.add_sphere(10e-3, base, near_face, r, m.aggregate_density, 1);
+  across.add_sphere(10e-3, base + reach, depth - near_face, r, m.aggregate_density, 2);
+  vrut::SimulationSettings3 box;
+  box.gravity = {0.0, 0.0, 0.0};
+  box.box.high = {40e-3, 20e-3, depth};
+  box.box.periodic[2] = true;
+  vrut::Simulation3<vrut::RuttingLaw, Space, vrut::CentralDifference, vrut::LoadControl, vrut::RuttingWallLaw> periodic(
+      across, c.table, box, {}, Space());
+  periodic.run(1, 0.3 * periodic.critical_timestep());
+  const double all_depth = snapshot(periodic, 0.0, 40e-3);
+  CHECK(all_depth > 0.0);
+  CHECK(snapshot(periodic, 0.0, 40e-3, vrut::DepthBand{0.0, 0.1 * depth, depth}) == all_depth);
+  CHECK(snapshot(periodic, 0.0, 40e-3, vrut::DepthBand{depth, 0.1 * depth, depth}) == all_depth);
+  CHECK(snapshot(periodic, 0.0, 40e-3, vrut::DepthBand{0.5 * depth, 0.2 * depth, depth}) == 0.0);
+}
