@@ -2,6 +2,9 @@
 // pinned, an ensemble equal to its single runs, Serial = OpenMP, and a
 // sphere outside its mould.
 #include "openmp_threads.hpp"
+#ifdef VRUT_TESTS_WITH_APP
+#include "report_checks.hpp"  // the application layer's writers: vrut-tests alone links them
+#endif
 #include "rutting_checks.hpp"
 #include "small_box3.hpp"
 
@@ -198,6 +201,14 @@ TEST_CASE("3D: an ensemble of two seeds gives the two single runs, bit for bit",
     require_same3(ensemble[e], alone);
   }
   CHECK(ensemble[0].result.deformation_final != ensemble[1].result.deformation_final);  // two specimens
+#ifdef VRUT_TESTS_WITH_APP
+  // What the program writes of each specimen's skeleton, specimen 1's read
+  // with its own stones: seeds.csv's columns and summary.json's block.
+  std::vector<vrut::RuttingResult> results;
+  for (const auto& run : ensemble) results.push_back(run.result);
+  REQUIRE(results[1].skeleton.load_early.measured());
+  vrut_test::check_skeleton_reports(results, vrut::WheelTracking{}, "spheres,placed_stones,stone_volume_fraction");
+#endif
 }
 
 #if defined(KOKKOS_ENABLE_SERIAL) && defined(KOKKOS_ENABLE_OPENMP)
