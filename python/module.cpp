@@ -88,7 +88,7 @@ py::dict rutting(const std::vector<std::string>& args, const std::string& out, c
   // that the checkpoint's options read back as vrut-rutting --resume reads
   // them, and config.ini names it.
   std::vector<std::string> argv = args;
-  if (!out.empty()) argv.insert(argv.end(), {"--out", out});
+  if (!out.empty()) argv.push_back("--out=" + out);  // one token: a folder may begin with '-'
   parse(cli, argv);
   given.io.images = app::image_cli::given_images(given.io);
   given.width_given = cli.count("--width-mm") > 0;

@@ -69,17 +69,19 @@ for header in $headers; do
            awk '/:$/ { n = $0; next } { print n $0 }')
 done
 # Anchors: [text](page.md#heading) and [text](#heading) name a heading of
-# that page, as GitHub spells it: lower case, inline markup dropped, every
-# character but letters, digits, _, - and space dropped, spaces as -, and
-# -1, -2 after a repeated one.
+# that page, as GitHub spells it: lower case, links and code marks
+# dropped, every character but letters, digits, _, - and space dropped,
+# spaces as -, and -1, -2 after a repeated one. (Emphasis, titled and
+# reference links are not read: no page here uses them in a heading or a
+# link to one.) A check that cannot run fails.
 python=$(command -v /usr/bin/python3 || command -v python3) || fail "python3 is needed to check the anchors"
-[[ -n $python ]] && "$python" - $pages <<'PY' | tee /tmp/doc_anchors.$$
+[[ -n $python ]] && "$python" - $pages <<'PY' >/tmp/doc_anchors.$$ 2>&1 || fail "the anchor check failed to run: $(tail -n 3 /tmp/doc_anchors.$$)"
 import os, re, sys
 
 def anchors(path, cache={}):
     if path not in cache:
         found, seen, fence = set(), {}, False
-        for line in open(path, encoding="utf-8"):
+        for line in open(path, encoding="utf-8", errors="replace"):
             if line.startswith("```"):
                 fence = not fence
             m = None if fence else re.match(r"^#{1,6}\s+(.*?)\s*#*\s*$", line)
@@ -93,7 +95,7 @@ def anchors(path, cache={}):
     return cache[path]
 
 for page in sys.argv[1:]:
-    for n, line in enumerate(open(page, encoding="utf-8"), 1):
+    for n, line in enumerate(open(page, encoding="utf-8", errors="replace"), 1):
         for target in re.findall(r"\]\(([^) ]+)\)", line):
             if "://" in target or "#" not in target:
                 continue
@@ -102,6 +104,7 @@ for page in sys.argv[1:]:
             if path.endswith(".md") and os.path.exists(path) and anchor not in anchors(path):
                 print(f"FAIL: {page}:{n}: no heading '#{anchor}' in {path}")
 PY
+cat /tmp/doc_anchors.$$
 [[ -s /tmp/doc_anchors.$$ ]] && bad=1
 rm -f /tmp/doc_anchors.$$
 # The headers say why, not when: no date in them but a study page's name.

@@ -114,7 +114,7 @@ interrupted_and_resumed() {  # DIR WHOLE_DIR SIGNAL ranks|mpirun WHAT ARGS...
   # not wait for it for ever, and the folder keeps its files.
   cp -r "$dir" "$dir.damaged"
   head -c 1000 "$dir/checkpoint-rank-1-of-2.vrut" >"$dir.damaged/checkpoint-rank-1-of-2.vrut"
-  timeout 60 mpirun -np 2 -x OMP_NUM_THREADS=1 -x OMP_PROC_BIND "$exe" --resume "$dir.damaged" >"$dir.damaged.out" 2>&1; code=$?
+  timeout -k 10 60 mpirun -np 2 -x OMP_NUM_THREADS=1 -x OMP_PROC_BIND "$exe" --resume "$dir.damaged" >"$dir.damaged.out" 2>&1; code=$?
   if [[ $code -ne 0 && $code -ne 124 ]] && grep -q "checkpoint-rank-1-of-2.vrut is damaged" "$dir.damaged.out" &&
      [[ -s $dir.damaged/checkpoint-rank-0-of-2.vrut ]]; then
     echo "ok:   $what: one rank failing alone ends the job (exit $code)"

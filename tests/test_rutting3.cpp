@@ -202,8 +202,9 @@ TEST_CASE("3D: an ensemble of two seeds gives the two single runs, bit for bit",
   }
   CHECK(ensemble[0].result.deformation_final != ensemble[1].result.deformation_final);  // two specimens
 #ifdef VRUT_TESTS_WITH_APP
-  // What the program writes of each specimen's skeleton, specimen 1's read
-  // with its own stones: seeds.csv's columns and summary.json's block.
+  // What the program writes of each specimen's skeleton (seeds.csv's
+  // columns, summary.json's block) against its result; that specimen 1's
+  // result was read with its own stones is require_same3's, above.
   std::vector<vrut::RuttingResult> results;
   for (const auto& run : ensemble) results.push_back(run.result);
   REQUIRE(results[1].skeleton.load_early.measured());

@@ -241,10 +241,11 @@ TEMPLATE_LIST_TEST_CASE("3D: the load path across a cut, the same three columns 
 // and a plate over either centre alone, but not the point, takes none of it
 // (filtering on a particle's position would give the reverse). In 3D the
 // same holds across the periodic depth: two spheres near the box's two
-// faces meet through the boundary, at depth 0, not at mid-depth, where the
-// mean of their stored depths lies.
-TEST_CASE("the load path across a cut counts a contact at its point: a leaning pair, and one across the periodic depth",
-          "[physics][skeleton]") {
+// faces (0.3 mm from each, 1.35 mm apart in height, so overlapping by
+// 0.52 mm) meet through the boundary, at depth 0, not at mid-depth, where
+// the mean of their stored depths lies.
+TEST_CASE("the load path across a cut counts a contact at its point: a leaning pair, and one across the "
+          "periodic depth", "[physics][skeleton]") {
   using Space = Kokkos::DefaultHostExecutionSpace;
   Columns c = three_columns();  // its table alone: groups 1 and 2 meet on the stones' spring
   const double reach = 1.35e-3, base = 3e-3;  // |d| = 1.909 mm, two radii 2 mm
@@ -286,7 +287,12 @@ TEST_CASE("the load path across a cut counts a contact at its point: a leaning p
   periodic.run(1, 0.3 * periodic.critical_timestep());
   const double all_depth = snapshot(periodic, 0.0, 40e-3);
   CHECK(all_depth > 0.0);
-  CHECK(snapshot(periodic, 0.0, 40e-3, vrut::DepthBand{0.0, 0.1 * depth, depth}) == all_depth);
-  CHECK(snapshot(periodic, 0.0, 40e-3, vrut::DepthBand{depth, 0.1 * depth, depth}) == all_depth);
+  // Bands narrower than the centres' 0.3 mm from the faces: each holds the
+  // contact's point, and neither centre, nor the centres' mean.
+  const double narrow = 0.2e-3;
+  CHECK(snapshot(periodic, 0.0, 40e-3, vrut::DepthBand{0.0, narrow, depth}) == all_depth);
+  CHECK(snapshot(periodic, 0.0, 40e-3, vrut::DepthBand{depth, narrow, depth}) == all_depth);
+  CHECK(snapshot(periodic, 0.0, 40e-3, vrut::DepthBand{near_face, narrow, depth}) == 0.0);          // the lower centre
+  CHECK(snapshot(periodic, 0.0, 40e-3, vrut::DepthBand{depth - near_face, narrow, depth}) == 0.0);  // the upper centre
   CHECK(snapshot(periodic, 0.0, 40e-3, vrut::DepthBand{0.5 * depth, 0.2 * depth, depth}) == 0.0);
 }

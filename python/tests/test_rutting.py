@@ -168,9 +168,9 @@ def test_a_stopped_run_leaves_a_checkpoint_the_command_line_resumes(cli, uninter
     assert summary["interrupted"] is True and summary["minutes_done"] < 60
     assert raised.value.run.summary["minutes_done"] == summary["minutes_done"]
     assert (tmp_path / "stopped" / "checkpoint.vrut").exists()
-    # Python has its own handler back: the signal now reaches Python.
-    assert signal.getsignal(signum) is python_handler
+    # Python has its own handler back: Ctrl-C now reaches Python.
     if signum == signal.SIGINT:
+        assert signal.getsignal(signum) is python_handler
         with pytest.raises(KeyboardInterrupt):
             os.kill(os.getpid(), signal.SIGINT)
             time.sleep(5)
@@ -180,7 +180,7 @@ def test_a_stopped_run_leaves_a_checkpoint_the_command_line_resumes(cli, uninter
     assert done.returncode == 0, done.stderr
     first = re.search(r"resumed: minute ([0-9.]+) of 60", done.stderr)
     assert first, done.stderr
-    assert 0.0 < summary["minutes_done"] <= float(first.group(1))
+    assert 0.0 < summary["minutes_done"] < float(first.group(1))
     resumed = json.loads((tmp_path / "stopped" / "summary.json").read_text())
     expected = json.loads((uninterrupted / "summary.json").read_text())
     assert resumed["rut_depth_mm"] == expected["rut_depth_mm"]

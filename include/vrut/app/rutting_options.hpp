@@ -28,7 +28,7 @@ namespace vrut::app {
 // left at their defaults: the stones' friction 0.6, its one constant, fitted
 // on 2#'s eight specimens at 1 mm spheres, and each mix's mastic stiffened by
 // its filler at Rigden voids 0.35, on no fitted constant (docs/validation.md,
-// round four, "The frozen 3D model"). The 3D model before it: --stone-friction
+// "The frozen 3D model"). The 3D model before it: --stone-friction
 // 1 --mastic-by-filler none. 2D keeps its own: the stones' friction that of
 // the mastic (--friction) and one mastic for every mix.
 // The constants are the library's vrut::RuttingModel3

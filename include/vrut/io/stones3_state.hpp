@@ -70,7 +70,7 @@ inline Placement3 placement_from_stones3_state(const nlohmann::json& state, cons
   r.value("achieved_fraction", p.achieved_fraction);
   r.value("jammed", p.jammed);
   r.value("compaction_steps", p.compaction_steps);
-  // Optional: a checkpoint of the same format from an older vrut has none (its stones settled).
+  // Optional: a checkpoint of this format and version written by an older build has none (its stones settled).
   if (state.contains("pairs_within_clearance")) {
     r.value("pairs_within_clearance", p.pairs_within_clearance);
     r.value("stones_within_clearance_of_a_wall", p.stones_within_clearance_of_a_wall);

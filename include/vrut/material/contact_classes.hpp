@@ -40,7 +40,7 @@ struct RuttingMaterials {
   double friction = 1.0;                // disk-disk, where no bond holds (calibrated, crushed stone)
   // Aggregate on aggregate only, where no bond holds; < 0: `friction`, as
   // the 2D model has it. The frozen 3D model's one fitted constant, 0.6
-  // (protocol/rutting/model3.hpp; docs/validation.md, round four).
+  // (protocol/rutting/model3.hpp; docs/validation.md, "The frozen 3D model").
   double stone_friction = -1.0;
   // How two stones meet (docs/validation.md, the gradation study): the
   // contact between disks of two different aggregates.

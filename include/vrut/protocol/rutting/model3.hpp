@@ -1,6 +1,6 @@
 #pragma once
-// The frozen 3D model (docs/validation.md, "The frozen 3D model"): what vrut-rutting --dim 3 runs at its defaults, for
-// a program of its own. RuttingMaterials' values but three:
+// The frozen 3D model (docs/validation.md, "The frozen 3D model"): what
+// vrut-rutting --dim 3 runs at its defaults, for a program of its own. RuttingMaterials' values but three:
 //   - the mastic-aggregate factor 1, the source's own (the 2D
 //     calibration's 4 held only at 1.5 mm spheres);
 //   - the stones' friction 0.6, the model's one constant, fitted on 2#'s
