@@ -7,7 +7,7 @@
 #    SIGTERM (exit 143) while the specimens settle (the run says it stops
 #    when the loading begins);
 #  - a 3D ensemble killed and resumed the same way, on the stones its
-#    checkpoint kept (not placed again);
+#    checkpoint kept (not placed again), and stopped by Ctrl-C;
 #  - each resume takes the test up where its checkpoint left it: its first
 #    sample lies past 0, and past a stopped run's last (not started over);
 #  - a damaged checkpoint, and options given beside --resume, are refused.
@@ -127,6 +127,9 @@ ctrl_c_and_resume() {  # [SIGNAL=TERM] ctrl_c_and_resume DIR WHOLE_DIR PROGRESS_
   same_results "$whole_dir" "$dir"
 }
 ctrl_c_and_resume stopped whole "loading.*[1-9]0 *%" "${small[@]}"
+# The same in 3D, the 3D ensemble above (its loading, about 2 s, gives the
+# poll a window of a second or more).
+ctrl_c_and_resume stopped3 whole3 "loading.*[1-9]0 *%" "${small3[@]}"
 
 # A scheduler's SIGTERM while settling: the run says it stops at the
 # loading's first sample, does so with a checkpoint (exit 143), and the
