@@ -24,7 +24,9 @@ for seed in $seeds; do
     for r in $radii; do
       dir="$out/m$mix-s$seed-r$r"
       log="$dir.log"
-      if [[ -e "$dir/summary.json" ]]; then continue; fi
+      # An interrupted run leaves partial results (summary.json) beside its
+      # checkpoint: the checkpoint says it is not done.
+      if [[ -e "$dir/summary.json" && ! -e "$dir/checkpoint.vrut" ]]; then continue; fi
       start=$(date +%s)
       if [[ -e "$dir/checkpoint.vrut" ]]; then
         echo "resuming $dir" >>"$log"
