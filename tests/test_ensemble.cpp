@@ -8,6 +8,7 @@
 #include "shaken_box.hpp"
 #include "spaces.hpp"
 
+#include <vrut/app/ranks.hpp>
 #include <vrut/app/rutting_report.hpp>
 #include <vrut/protocol/rutting.hpp>
 #include <vrut/vrut.hpp>
@@ -238,4 +239,23 @@ TEST_CASE("an ensemble with the method's exact stones gives each specimen its si
   vrut::RuttingMaterials exact;
   exact.rigid_stones = false;
   check_ensemble_against_single_runs(exact);
+}
+
+// vrut-rutting starts MPI only where a launcher started it: each launcher's
+// own variable says so, and nothing else does (an empty one, or VRUT_MPI set
+// to anything but 1, runs as one process without MPI's start-up).
+TEST_CASE("MPI starts under each launcher's variable and only there", "[unit]") {
+  using vrut::app::ranks::launched_by_mpi;
+  auto with = [](std::string name, std::string value) {
+    return [name, value](const char* asked) -> const char* { return name == asked ? value.c_str() : nullptr; };
+  };
+  CHECK_FALSE(launched_by_mpi([](const char*) -> const char* { return nullptr; }));
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE", "MV2_COMM_WORLD_SIZE"}) {
+    INFO(name);
+    CHECK(launched_by_mpi(with(name, "2")));
+    CHECK_FALSE(launched_by_mpi(with(name, "")));
+  }
+  CHECK(launched_by_mpi(with("VRUT_MPI", "1")));
+  CHECK_FALSE(launched_by_mpi(with("VRUT_MPI", "0")));
+  CHECK_FALSE(launched_by_mpi(with("SLURM_PROCID", "0")));  // a scheduler's job, not an MPI launcher's
 }

@@ -26,22 +26,39 @@
 
 namespace vrut::app::ranks {
 
-// MPI for the life of main(); one rank when vrut was built without MPI or
-// run without mpirun.
+// Whether an MPI launcher started this process: mpirun and mpiexec of Open
+// MPI, of MPICH and its kin (Intel MPI, MVAPICH), and srun under PMI or PMIx
+// each set one of these. Without one, MPI_Init would start a singleton
+// runtime (Open MPI forks its daemon) that costs about 0.4 s for one rank and
+// nothing to share: long enough to slow every `--help` and refused input.
+// VRUT_MPI=1 says "launched" for a launcher that sets none of them.
+template <class Lookup = char* (*)(const char*)>
+bool launched_by_mpi(Lookup environment = &std::getenv) {
+  if (const char* forced = environment("VRUT_MPI"); forced != nullptr && std::strcmp(forced, "1") == 0) return true;
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE", "MV2_COMM_WORLD_SIZE"})
+    if (const char* value = environment(name); value != nullptr && *value != '\0') return true;
+  return false;
+}
+
+// MPI for the life of main(), started only under an MPI launcher; one rank
+// when vrut was built without MPI or run without a launcher.
 class Session {
  public:
   Session(int& argc, char**& argv) {
 #ifdef VRUT_WITH_MPI
-    MPI_Init(&argc, &argv);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    if (launched_by_mpi()) {
+      MPI_Init(&argc, &argv);
+      mpi_ = true;
+      MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+      MPI_Comm_size(MPI_COMM_WORLD, &size_);
+    }
 #else
     (void)argc, (void)argv;
 #endif
   }
   ~Session() {
 #ifdef VRUT_WITH_MPI
-    MPI_Finalize();
+    if (mpi_) MPI_Finalize();
 #endif
   }
   Session(const Session&) = delete;
@@ -53,7 +70,7 @@ class Session {
   // waiting for its results.
   [[noreturn]] void abort(int code) const {
 #ifdef VRUT_WITH_MPI
-    MPI_Abort(MPI_COMM_WORLD, code);
+    if (mpi_) MPI_Abort(MPI_COMM_WORLD, code);
 #endif
     std::exit(code);
   }
@@ -90,6 +107,9 @@ class Session {
 
  private:
   int rank_ = 0, size_ = 1;
+#ifdef VRUT_WITH_MPI
+  bool mpi_ = false;  // MPI_Init was called
+#endif
 };
 
 // This rank's block of n items: [first, second). Blocks keep the seeds in
