@@ -17,6 +17,11 @@ import vrut
 # that runs compare bit for bit whatever the machine.
 SMALL = dict(gradation=2, seed=1, width_mm=100, threads=1)
 SMALL_ARGS = ["--gradation", "2", "--seed", "1", "--width-mm", "100", "--threads", "1"]
+# A tiny one (60 x 30 mm of 1 mm disks, a short settling, a large time shift:
+# about 0.15 s) where a test compares two runs with each other and needs no
+# physics of the full test.
+TINY = dict(gradation=2, seed=1, width_mm=60, height_mm=30, disk_radius_mm=1, shift=1e5, settle_steps=300, threads=1)
+TINY_ARGS = [a for k, v in TINY.items() for a in ("--" + k.replace("_", "-"), str(v))]
 # What differs between two runs of one input: the clock, and what it gives.
 CLOCK = {"wall_seconds", "particle_steps_per_second"}
 
@@ -35,6 +40,14 @@ def without_clock(summary):
 def uninterrupted(cli, tmp_path_factory):
     """The command line's SMALL run, to its end: the folder of its results."""
     done, out = run_cli(cli, SMALL_ARGS, tmp_path_factory.mktemp("uninterrupted"))
+    assert done.returncode == 0, done.stderr
+    return out
+
+
+@pytest.fixture(scope="module")
+def uninterrupted_tiny(cli, tmp_path_factory):
+    """The command line's TINY run, to its end: the folder of its results."""
+    done, out = run_cli(cli, TINY_ARGS, tmp_path_factory.mktemp("uninterrupted_tiny"))
     assert done.returncode == 0, done.stderr
     return out
 
@@ -79,17 +92,17 @@ def test_a_3d_run_is_the_command_lines(cli, tmp_path):
 def test_float_options_reach_the_run_exactly(cli, tmp_path):
     # A value with no short decimal form: the module must pass it without rounding.
     eta1 = 83.34 * (1.0 + 2.0 ** -40)
-    done, out = run_cli(cli, SMALL_ARGS + ["--eta1", repr(eta1), "--minutes", "46"], tmp_path)
+    done, out = run_cli(cli, TINY_ARGS + ["--eta1", repr(eta1), "--minutes", "46"], tmp_path)
     assert done.returncode == 0, done.stderr
     expected = json.loads((out / "summary.json").read_text())
-    run = vrut.rutting(eta1=eta1, minutes=46, **SMALL)
+    run = vrut.rutting(eta1=eta1, minutes=46, **TINY)
     assert without_clock(run.summary) == without_clock(expected)
 
 
 def test_numpy_scalars_and_seed_lists():
     # A sweep over numpy.linspace passes numpy scalars: the same run as Python's floats.
-    a = vrut.rutting(eta1=numpy.float64(60.0), minutes=numpy.int64(46), **SMALL)
-    b = vrut.rutting(eta1=60.0, minutes=46, **SMALL)
+    a = vrut.rutting(eta1=numpy.float64(60.0), minutes=numpy.int64(46), **TINY)
+    b = vrut.rutting(eta1=60.0, minutes=46, **TINY)
     assert numpy.array_equal(a.deformation_mm, b.deformation_mm)
     with pytest.raises(ValueError, match="no seeds"):
         vrut.rutting(seeds=[], width_mm=100)
@@ -98,10 +111,11 @@ def test_numpy_scalars_and_seed_lists():
 
 
 def test_an_ensemble_equals_its_single_runs():
-    both = vrut.rutting(gradation=2, seeds=[1, 2], width_mm=100, threads=1, minutes=46)
+    one_seed = {k: v for k, v in TINY.items() if k != "seed"}
+    both = vrut.rutting(seeds=[1, 2], **one_seed)
     assert both.seeds == [1, 2]
     for k, seed in enumerate((1, 2)):
-        alone = vrut.rutting(gradation=2, seed=seed, width_mm=100, threads=1, minutes=46)
+        alone = vrut.rutting(seed=seed, **one_seed)
         assert numpy.array_equal(both.curves_mm[k], alone.deformation_mm)
         assert both.per_seed[k]["rut_depth_mm"] == alone.rut_depth_mm
     # The mean curve is the specimens' mean, sample by sample.
@@ -145,13 +159,13 @@ def test_unknown_or_reserved_keywords_are_type_errors():
 
 def test_progress_reaches_the_end():
     seen = []
-    vrut.rutting(progress=seen.append, minutes=46, **SMALL)
+    vrut.rutting(progress=seen.append, **TINY)
     assert seen and seen[-1] == pytest.approx(1.0, abs=1e-3)
     assert all(a <= b for a, b in zip(seen, seen[1:]))
 
 
 @pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM], ids=["ctrl-c", "sigterm"])
-def test_a_stopped_run_leaves_a_checkpoint_the_command_line_resumes(cli, uninterrupted, tmp_path, signum):
+def test_a_stopped_run_leaves_a_checkpoint_the_command_line_resumes(cli, uninterrupted_tiny, tmp_path, signum):
     python_handler = signal.getsignal(signum)
     started = threading.Event()
 
@@ -163,7 +177,7 @@ def test_a_stopped_run_leaves_a_checkpoint_the_command_line_resumes(cli, uninter
     # Ctrl-C: KeyboardInterrupt with the way on; SIGTERM: the command line's exit code, 143.
     stop = KeyboardInterrupt if signum == signal.SIGINT else SystemExit
     with pytest.raises(stop, match="vrut-rutting --resume" if stop is KeyboardInterrupt else "^143$") as raised:
-        vrut.rutting(out=tmp_path / "stopped", progress=progress, **SMALL)
+        vrut.rutting(out=tmp_path / "stopped", progress=progress, **TINY)
     summary = json.loads((tmp_path / "stopped" / "summary.json").read_text())
     assert summary["interrupted"] is True and summary["minutes_done"] < 60
     assert raised.value.run.summary["minutes_done"] == summary["minutes_done"]
@@ -182,14 +196,14 @@ def test_a_stopped_run_leaves_a_checkpoint_the_command_line_resumes(cli, uninter
     assert first, done.stderr
     assert 0.0 < summary["minutes_done"] < float(first.group(1))
     resumed = json.loads((tmp_path / "stopped" / "summary.json").read_text())
-    expected = json.loads((uninterrupted / "summary.json").read_text())
+    expected = json.loads((uninterrupted_tiny / "summary.json").read_text())
     assert resumed["rut_depth_mm"] == expected["rut_depth_mm"]
     assert resumed["dynamic_stability_passes_per_mm"] == expected["dynamic_stability_passes_per_mm"]
-    assert (tmp_path / "stopped" / "deformation.csv").read_bytes() == (uninterrupted / "deformation.csv").read_bytes()
+    assert (tmp_path / "stopped" / "deformation.csv").read_bytes() == (uninterrupted_tiny / "deformation.csv").read_bytes()
     assert not (tmp_path / "stopped" / "checkpoint.vrut").exists()
 
 
 def test_one_kokkos_runtime_per_process():
-    vrut.rutting(minutes=46, **SMALL)  # Kokkos runs on one thread from here on
+    vrut.rutting(**TINY)  # Kokkos runs on one thread from here on
     with pytest.raises(ValueError, match="start a new Python process"):
         vrut.rutting(gradation=2, seed=1, width_mm=100, threads=2)

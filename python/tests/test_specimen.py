@@ -10,7 +10,7 @@ import vrut
 def test_specimen_is_the_command_lines(cli, tmp_path):
     out = tmp_path / "cli"
     done = subprocess.run([cli, "--gradation", "3", "--seed", "4", "--width-mm", "100", "--threads", "1",
-                           "--minutes", "46", "--out", str(out)], capture_output=True, text=True)
+                           "--shift", "1e5", "--settle-steps", "300", "--out", str(out)], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     expected = json.loads((out / "summary.json").read_text())
     sp = vrut.specimen(gradation=3, seed=4, width_mm=100)
@@ -25,7 +25,7 @@ def test_specimen_is_the_command_lines(cli, tmp_path):
 
 
 def test_a_3d_specimen_has_depth():
-    sp = vrut.specimen(dim=3, gradation=2, seed=1, width_mm=30, height_mm=25, sphere_radius_mm=1.5, threads=1)
+    sp = vrut.specimen(dim=3, gradation=1, seed=1, width_mm=30, height_mm=25, sphere_radius_mm=1.5, threads=1)
     assert sp.z_mm is not None and len(sp.z_mm) == len(sp)
     width, height, depth = sp.summary["box_mm"]
     assert (width, height) == (30, 25)
