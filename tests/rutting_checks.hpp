@@ -60,7 +60,9 @@ inline void require_same(const vrut::RuttingResult& a, const vrut::RuttingResult
     REQUIRE(same_bits(a.samples[k].plate_pressure, b.samples[k].plate_pressure));
     REQUIRE(same_bits(a.samples[k].minutes, b.samples[k].minutes));
     REQUIRE(same_bits(a.samples[k].reduced_time, b.samples[k].reduced_time));
+    REQUIRE(same_bits(a.samples[k].plate_speed, b.samples[k].plate_speed));
   }
+  REQUIRE(same_bits(a.plate_mass, b.plate_mass));
   REQUIRE(a.snapshots.size() == b.snapshots.size());
   for (std::size_t k = 0; k < a.snapshots.size(); ++k) {
     REQUIRE(a.snapshots[k].fraction == b.snapshots[k].fraction);
@@ -132,6 +134,35 @@ inline void check_pinned(const vrut::RuttingResult& res, const RuttingPin& pin) 
     INFO("deformation " << exact_text(res.samples[k].deformation * 1e3) << " mm against the pin's " << exact_text(mm));
     CHECK(same_bits(res.samples[k].deformation * 1e3, mm));
   }
+}
+
+// The plate's momentum balance from the samples taken after `from_minute`
+// (the load's ramp done): between the sample before them and the last, the
+// dead load's impulse F T, less the contacts' (each sample's pressure times
+// the plate's area and its interval), is the plate's change of momentum
+// m (v_last - v_before). F and the area are the caller's, worked by hand, so
+// a plate of another size or load, a pressure over another area, or an
+// impulse counted over another interval breaks it. The plate is moved by
+// exactly this balance each step (servo/servo.hpp, LoadControl), so the sums
+// agree to their rounding: thousands of steps' impulses summed in doubles,
+// well inside 1e-9 of F T. Returns the mean pressure's departure from F /
+// area that the momentum accounts for, m (v_last - v_before) / (area T).
+inline double check_plate_momentum(const vrut::RuttingResult& res, double force, double area, double from_minute) {
+  std::size_t before = 0;
+  while (before + 1 < res.samples.size() && res.samples[before + 1].minutes <= from_minute) ++before;
+  REQUIRE(before + 2 < res.samples.size());
+  const auto& first = res.samples[before];
+  const auto& last = res.samples.back();
+  double contacts = 0.0;
+  for (std::size_t k = before + 1; k < res.samples.size(); ++k)
+    contacts += res.samples[k].plate_pressure * area * (res.samples[k].reduced_time - res.samples[k - 1].reduced_time);
+  const double span = last.reduced_time - first.reduced_time;
+  const double momentum = res.plate_mass * (last.plate_speed - first.plate_speed);
+  INFO("dead load's impulse " << force * span << " N s, contacts' " << contacts << ", plate's change of momentum "
+                              << momentum);
+  REQUIRE(res.plate_mass > 0.0);
+  CHECK(force * span - contacts == Approx(momentum).margin(1e-9 * force * span));
+  return momentum / (area * span);
 }
 
 }  // namespace vrut_test

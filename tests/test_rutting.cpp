@@ -53,6 +53,10 @@ void check_sane_and_pinned(const vrut::RuttingMaterials& materials, const vrut_t
               what, res.deformation_final * 1e3, res.deformation_at_ds_start * 1e3, res.dynamic_stability, res.steps,
               worst_pressure, worst_backstep);
   CHECK(worst_pressure < 0.02);
+  // The plate under the wheel's load: its length the contact length, across
+  // the section's thickness (the wheel's width, 50 mm).
+  const double area = vrut::WheelTracking{}.contact_length() * 0.05;
+  vrut_test::check_plate_momentum(res, 0.7e6 * area, area, 5.0);
   CHECK(worst_backstep <= 1e-5);  // monotone, to 0.01 mm of rebound
   CHECK(res.deformation_final > res.deformation_at_ds_start);
   CHECK(res.deformation_at_ds_start > 0.0);
@@ -498,9 +502,11 @@ TEST_CASE("a transverse section puts the wheel's width under the same pressure",
   const double width = sp.width * 1e-3;
   CHECK(res.plate_x0 == Approx(0.5 * (width - 0.05)).epsilon(1e-12));
   CHECK(res.plate_x1 == Approx(0.5 * (width + 0.05)).epsilon(1e-12));
-  // After the ramp (2 % of the test) the dead load holds the pressure.
+  // After the ramp (2 % of the test) the dead load holds the pressure, over
+  // the wheel's width (50 mm) squared.
   for (const auto& s : res.samples)
     if (s.minutes > 1.0) CHECK(s.plate_pressure == Approx(0.7e6).epsilon(0.02));
+  vrut_test::check_plate_momentum(res, 0.7e6 * 0.05 * 0.05, 0.05 * 0.05, 1.0);
   CHECK(res.deformation_final > 0.0);
 }
 

@@ -193,7 +193,7 @@ inline nlohmann::json to_json(const vrut::RuttingResult& r, const SpecimenFacts&
           {"dynamic_stability", r.dynamic_stability},  // CBOR keeps infinity and NaN
           {"dynamic_stability_is_lower_bound", r.dynamic_stability_is_lower_bound},
           {"deformation_resolution", r.deformation_resolution},
-          {"plate", {r.plate_x0, r.plate_x1, r.plate_y_final}},
+          {"plate", {r.plate_x0, r.plate_x1, r.plate_y_final}}, {"plate_mass", r.plate_mass},
           {"particles", r.particles}, {"contacts", r.contacts}, {"bonds", r.bonds},
           {"stones", r.stones}, {"stone_pairs_touching", r.stone_pairs_touching},
           {"interrupted", r.interrupted}, {"steps", r.steps}, {"dt", r.dt}, {"wall_seconds", r.wall_seconds},
@@ -214,6 +214,7 @@ inline std::pair<vrut::RuttingResult, SpecimenFacts> from_json(const nlohmann::j
   r.dynamic_stability_is_lower_bound = j.at("dynamic_stability_is_lower_bound");
   r.deformation_resolution = j.at("deformation_resolution");
   r.plate_x0 = j.at("plate")[0], r.plate_x1 = j.at("plate")[1], r.plate_y_final = j.at("plate")[2];
+  r.plate_mass = j.at("plate_mass");
   r.particles = j.at("particles"), r.contacts = j.at("contacts"), r.bonds = j.at("bonds");
   r.stones = j.at("stones"), r.stone_pairs_touching = j.at("stone_pairs_touching");
   r.interrupted = j.at("interrupted"), r.steps = j.at("steps"), r.dt = j.at("dt"), r.wall_seconds = j.at("wall_seconds");

@@ -37,7 +37,8 @@ namespace vrut {
 // 4: a Choice's contact slot holds the state of the law that
 // acts there only (contact/choice.hpp), so the contact state's bytes changed;
 // a checkpoint of format 3 is refused by its format, not by its item sizes.
-inline constexpr int checkpoint_format = 4;
+// 5: each sample holds the plate's speed (protocol/rutting/result.hpp).
+inline constexpr int checkpoint_format = 5;
 inline constexpr const char* checkpoint_magic = "vrut checkpoint\n";
 
 // A checkpoint that cannot be used: not one, damaged, from another version,

@@ -136,6 +136,7 @@ std::vector<typename Setup::result_type> run_rutting_test(const Setup& setup, co
         if (x(i).x + r > res.plate_x0 && x(i).x - r < res.plate_x1 && in_depth_band(band, x(i), r))
           top[e] = std::max(top[e], x(i).y + r);
       plate_mass[e] = setup.plate_mass(k_wall, dt, e);
+      res.plate_mass = plate_mass[e];
       plate[e] = sim.add_wall(setup.plate(e, top[e]), wall_law, setup.plate_load(0.0, plate_mass[e]), e);
     }
   }
@@ -207,6 +208,7 @@ std::vector<typename Setup::result_type> run_rutting_test(const Setup& setup, co
       smp.minutes = time * to_minutes;
       smp.deformation = top[e] - at.y;
       smp.plate_pressure = state.plate_sample(e, impulse[plate[e]], at, inward_normal(w), time, setup.plate_area());
+      smp.plate_speed = dot(w.velocity, inward_normal(w));
       result(e).samples.push_back(smp);
       LoadPath& early = result(e).skeleton.load_early;
       if (!early.measured() && smp.minutes >= SkeletonRecord::early_minute) {

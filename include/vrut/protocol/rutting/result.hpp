@@ -16,6 +16,7 @@ namespace vrut {
 struct RuttingSample {
   double minutes = 0.0, reduced_time = 0.0, deformation = 0.0 /* m */;
   double plate_pressure = 0.0;  // Pa, mean over the interval since the previous sample
+  double plate_speed = 0.0;     // m/s, the plate's into the specimen at the sample
 };
 
 struct RuttingSnapshot {
@@ -37,6 +38,10 @@ struct RuttingResult {
   double deformation_resolution = 0.0;
   bool dynamic_stability_is_lower_bound = false;
   double plate_x0 = 0.0, plate_x1 = 0.0, plate_y_final = 0.0;     // m
+  /// The plate's mass (kg): with its speed at two samples and the pressures
+  /// between them, its momentum balance (the dead load's impulse less the
+  /// contacts', over the interval, is its change of momentum).
+  double plate_mass = 0.0;
   std::size_t particles = 0;
   int contacts = 0, bonds = 0;
   /// At the end: the stones holding disks, and the pairs of them that touch
