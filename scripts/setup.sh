@@ -15,7 +15,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 packages=(g++ cmake ninja-build make pkg-config libeigen3-dev libboost-dev catch2 libcli11-dev
           libbenchmark-dev nlohmann-json3-dev gnuplot-nox libcairo2-dev clang libclang-rt-14-dev
           libopenmpi-dev openmpi-bin libopencv-imgproc-dev libopencv-imgcodecs-dev libqhull-dev libccd-dev
-          pybind11-dev python3-dev python3-numpy python3-pytest doxygen)
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-jsonschema doxygen)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -12,6 +12,7 @@ import numpy
 import pytest
 
 import vrut
+from conftest import check_summary
 
 # A short 2D run (a 100 mm section, about 3 s on one thread), one thread so
 # that runs compare bit for bit whatever the machine.
@@ -55,6 +56,7 @@ def uninterrupted_tiny(cli, tmp_path_factory):
 def test_same_numbers_and_files_as_the_command_line(uninterrupted, tmp_path):
     out = uninterrupted
     expected = json.loads((out / "summary.json").read_text())
+    check_summary(expected)  # a 2D run
     run = vrut.rutting(out=tmp_path / "py", **SMALL)
     # Every double of summary.json, as the command line wrote it (JSON keeps 17 digits).
     assert without_clock(run.summary) == without_clock(expected)
@@ -84,6 +86,7 @@ def test_a_3d_run_is_the_command_lines(cli, tmp_path):
     assert done.returncode == 0, done.stderr
     expected = json.loads((out / "summary.json").read_text())
     assert expected["dimension"] == 3
+    check_summary(expected)  # a 3D run
     run = vrut.rutting(out=tmp_path / "py", **small3)
     assert without_clock(run.summary) == without_clock(expected)
     assert (tmp_path / "py" / "deformation.csv").read_bytes() == (out / "deformation.csv").read_bytes()
@@ -114,6 +117,7 @@ def test_an_ensemble_equals_its_single_runs():
     one_seed = {k: v for k, v in TINY.items() if k != "seed"}
     both = vrut.rutting(seeds=[1, 2], **one_seed)
     assert both.seeds == [1, 2]
+    check_summary(both.summary)  # an ensemble
     for k, seed in enumerate((1, 2)):
         alone = vrut.rutting(seed=seed, **one_seed)
         assert numpy.array_equal(both.curves_mm[k], alone.deformation_mm)
@@ -180,6 +184,7 @@ def test_a_stopped_run_leaves_a_checkpoint_the_command_line_resumes(cli, uninter
         vrut.rutting(out=tmp_path / "stopped", progress=progress, **TINY)
     summary = json.loads((tmp_path / "stopped" / "summary.json").read_text())
     assert summary["interrupted"] is True and summary["minutes_done"] < 60
+    check_summary(summary)  # a stopped run
     assert raised.value.run.summary["minutes_done"] == summary["minutes_done"]
     assert (tmp_path / "stopped" / "checkpoint.vrut").exists()
     # Python has its own handler back: Ctrl-C now reaches Python.
@@ -207,3 +212,18 @@ def test_one_kokkos_runtime_per_process():
     vrut.rutting(**TINY)  # Kokkos runs on one thread from here on
     with pytest.raises(ValueError, match="start a new Python process"):
         vrut.rutting(gradation=2, seed=1, width_mm=100, threads=2)
+
+
+def test_the_schema_refuses_a_summary_that_drifts(uninterrupted):
+    # The schema is a check, not a description: each of the two shapes the
+    # summaries had before they became one, and a key it does not know, fail.
+    summary = json.loads((uninterrupted / "summary.json").read_text())
+    for drift in (dict(plate_mm=summary["plate_mm"][0]),  # 2D's plate as one number
+                  dict(sphere_radius_mm=1.0),             # a 3D key in a 2D summary
+                  dict(plate="patch"),                    # a patch is 3D's
+                  dict(undocumented=1)):
+        with pytest.raises(AssertionError):
+            check_summary({**summary, **drift})
+    for key in ("dimension", "calibrated", "dynamic_stability_standard"):
+        with pytest.raises(AssertionError, match=key):
+            check_summary({k: v for k, v in summary.items() if k != key})

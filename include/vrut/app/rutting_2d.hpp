@@ -212,6 +212,7 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   }
 
   nlohmann::json& j = outcome.summary;
+  j["dimension"] = 2;
   j["gradation"] = ss.gradation.name;
   j["seed"] = seeds.front();
   if (from_images) j["images"] = images;  // specimen k (the "seed" k) is image k
@@ -229,6 +230,11 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   j["stone_friction"] = vrut::stone_friction_of(mat);
   j["mastic_by_filler"] = o.mastic_by_filler;  // a candidate in 2D (docs/validation.md); none in the model
   j["mastic_scale"] = o.mastic_scale;
+  // Whether this run is the 2D model fitted on 2# (docs/validation.md, "The
+  // 2D model, calibrated on 2#"): its fitted factor and its stones' film as
+  // the model has them.
+  const vrut::RuttingMaterials model;
+  j["calibrated"] = mat.mastic_aggregate_factor == model.mastic_aggregate_factor && mat.stone_film == model.stone_film;
   j["wall_seconds"] = wall_seconds;
   j["mpi_ranks"] = session.size();
   j["backend"] = backend;
@@ -236,7 +242,9 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   j["particle_steps_per_second"] = disks * static_cast<double>(res.steps) / wall_seconds;
   j["contact_length_mm"] = wt.contact_length() * 1e3;
   j["section"] = wt.transverse ? "transverse" : "longitudinal";
-  j["plate_mm"] = wt.plate_length() * 1e3;
+  // Along the section, and across it: the section's thickness, the wheel's width.
+  j["plate_mm"] = {wt.plate_length() * 1e3, wt.wheel_width * 1e3};
+  j["plate"] = "strip";
   j["loading_time_s"] = wt.loading_time();
   // For an ensemble: the first specimen's bonds, contacts and description.
   add_shared_summary(j, res, report, interrupted, minutes_done);

@@ -72,6 +72,7 @@ inline vrut::SpecimenSettings to_settings(const SpecimenOptions& o) {
 
 inline nlohmann::json specimen_summary(const vrut::Specimen& sp) {
   nlohmann::json j;
+  j["dimension"] = 2;
   if (sp.stereology.classes.empty()) {  // not generated: from an image
     const std::size_t agg = sp.aggregate_disks();
     j["source"] = sp.name;
