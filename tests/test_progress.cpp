@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 TEST_CASE("the progress bar writes a slow rate with its digits and a long ETA in minutes and hours",
           "[progress][unit]") {
@@ -79,4 +80,29 @@ TEST_CASE("a bar in steps gives steps a second", "[progress][unit]") {
   REQUIRE(std::fgets(line, sizeof line, f) != nullptr);
   std::fclose(f);
   CHECK(std::string(line).find(" 20%  250 steps/s  ETA 16 s") != std::string::npos);
+}
+
+// A short settling (300 steps done between two reports a microsecond apart)
+// has no rate a person can use: the bar says "-", not the billions of steps
+// a second that the clock's resolution gives; over a second it says 300.
+TEST_CASE("a rate over less than a twentieth of a second is not shown", "[progress][unit]") {
+  using vrut::ProgressBar;
+  for (const auto& [span, rate] : {std::pair<std::chrono::microseconds, std::string>{std::chrono::microseconds(1), "-"},
+                                   {std::chrono::microseconds(49'000), "-"},
+                                   {std::chrono::microseconds(1'000'000), "300"}}) {
+    std::FILE* f = std::tmpfile();
+    REQUIRE(f != nullptr);
+    {
+      ProgressBar bar("settling", 300, "steps", f);
+      const auto t0 = ProgressBar::clock::now();
+      bar.update(0, t0);
+      bar.finish(t0 + span);
+    }
+    std::rewind(f);
+    char line[200] = {};
+    REQUIRE(std::fgets(line, sizeof line, f) != nullptr);
+    std::fclose(f);
+    INFO(line);
+    CHECK(std::string(line).find("100%  " + rate + " steps/s  ETA 0 s") != std::string::npos);
+  }
 }

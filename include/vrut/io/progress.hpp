@@ -52,9 +52,10 @@ class ProgressBar {
     draw(done, now);
   }
 
-  void finish() {
+  void finish() { finish(clock::now()); }
+  // As finish(), at the time `now` (tests give their own).
+  void finish(clock::time_point now) {
     if (out_ == nullptr) return;
-    const auto now = clock::now();
     if (first_done_ < 0) first_done_ = 0, first_report_ = start_;
     draw(total_, now);
     std::fprintf(out_, tty_ ? "\n" : "");
@@ -86,7 +87,10 @@ class ProgressBar {
  private:
   void draw(long done, clock::time_point now) {
     const double seconds = std::chrono::duration<double>(now - first_report_).count();
-    const bool measured = seconds > 0.0 && done > first_done_;  // else no rate yet: "-"
+    // Else no rate yet: "-". Over less than a twentieth of a second the clock's
+    // resolution and the first report's own cost are the rate (a short
+    // settling read "2777777778 steps/s").
+    const bool measured = seconds >= least_seconds && done > first_done_;
     const double rate = measured ? (done - first_done_) / seconds : 0.0;  // counts a second
     const std::string eta = done >= total_ ? "0 s" : measured ? duration_text((total_ - done) / rate) : "-";
     const int width = 30, filled = static_cast<int>(width * static_cast<double>(done) / total_);
@@ -98,6 +102,7 @@ class ProgressBar {
     std::fflush(out_);
   }
 
+  static constexpr double least_seconds = 0.05;
   std::string label_;
   RateUnit unit_;
   long total_;
