@@ -70,8 +70,8 @@ inline RuttingOutcome run_rutting_2d(RunOptions o, vrut::CheckpointFile* checkpo
   if (from_images && (!seeds_text.empty() || o.seed_given))
     throw std::invalid_argument("--image gives the specimens: --seed and --seeds do not go with it");
   vrut::SpecimenSettings ss = specimen_cli::to_settings(so);
-  o.mat.least_film = least_film_m(o.least_film, ss.gradation, ss.mix);
-  o.mat.stone_shear_film = least_film_m(o.stone_shear_film, ss.gradation, ss.mix, "--stone-shear-film");
+  o.mat.least_film = binder_film_option_m("--least-film", o.least_film, ss.gradation, ss.mix);
+  o.mat.stone_shear_film = binder_film_option_m("--stone-shear-film", o.stone_shear_film, ss.gradation, ss.mix);
   scale_mastic_by_filler(o, ss.gradation, ss.mix);
   // Everything checkable is checked before the specimen is made.
   mat.mastic.validate();

@@ -104,8 +104,8 @@ inline RuttingOutcome run_rutting_3d(RunOptions o, vrut::CheckpointFile* checkpo
   vrut::validate_poisson(mat.aggregate_nu);
   vrut::TimeShift{num.shift};
   vrut::SpecimenSettings3 ss = specimen_cli::to_settings3(o.so, o.o3);
-  o.mat.least_film = least_film_m(o.least_film, ss.gradation, ss.mix);
-  o.mat.stone_shear_film = least_film_m(o.stone_shear_film, ss.gradation, ss.mix, "--stone-shear-film");
+  o.mat.least_film = binder_film_option_m("--least-film", o.least_film, ss.gradation, ss.mix);
+  o.mat.stone_shear_film = binder_film_option_m("--stone-shear-film", o.stone_shear_film, ss.gradation, ss.mix);
   scale_mastic_by_filler(o, ss.gradation, ss.mix);
   wt.validate(ss.placement.width * 1e-3);
   if (wt.patch)

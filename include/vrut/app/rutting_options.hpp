@@ -52,7 +52,7 @@ struct RunOptions {
   std::string backend = "openmp", out = "out/rutting", conversion = "seed", stone_film = "per-contact", seeds_text;
   std::string section = "longitudinal";  // --section (wt.transverse)
   std::string plate = "strip";           // --plate (wt.patch)
-  std::string least_film = "none";  // --least-film: none, binder or micrometres (least_film_m)
+  std::string least_film = "none";  // --least-film: none, binder or micrometres (binder_film_option_m)
   std::string stone_shear_film = "none";  // --stone-shear-film: the same words (mat.stone_shear_film)
   std::string mastic_by_filler = "model";  // --mastic-by-filler: model, none or the filler's Rigden voids (mastic_filler_scale)
   double mastic_scale = 1.0;              // the factor --mastic-by-filler gave the mastic (1 with none)
@@ -108,11 +108,12 @@ inline double whole_number(const std::string& text) {
   return used == text.size() ? value : std::nan("");
 }
 
-// --least-film's thickness, m: none (0), binder (two binder films of the
-// mix, one on each stone: specimen/binder_film.hpp), or micrometres.
-// The same words give --stone-shear-film's (option names which).
-inline double least_film_m(const std::string& text, const vrut::Gradation& g, const vrut::MixVolumetrics& mix,
-                           const std::string& option = "--least-film") {
+// The thickness, m, that a film option gives (--least-film,
+// --stone-shear-film; `option` names which in a refusal): none (0), binder
+// (two binder films of the mix, one on each stone: specimen/binder_film.hpp),
+// or micrometres.
+inline double binder_film_option_m(const std::string& option, const std::string& text, const vrut::Gradation& g,
+                                   const vrut::MixVolumetrics& mix) {
   if (text == "none") return 0.0;
   if (text == "binder") return 2.0 * vrut::binder_film(g, mix).thickness_um * 1e-6;
   const double um = whole_number(text);
@@ -125,7 +126,7 @@ inline double least_film_m(const std::string& text, const vrut::Gradation& g, co
 inline std::function<std::string(const std::string&)> binder_film_check(const std::string& option) {
   return [option](const std::string& v) {
     try {
-      least_film_m(v == "binder" ? "0" : v, vrut::builtin_gradation(2), vrut::MixVolumetrics{}, option);
+      binder_film_option_m(option, v == "binder" ? "0" : v, vrut::builtin_gradation(2), vrut::MixVolumetrics{});
     } catch (const std::invalid_argument& e) {
       return std::string(e.what()).substr(option.size() + 2);
     }
