@@ -8,6 +8,17 @@ import shutil
 import jsonschema
 import pytest
 
+# A tiny 2D run (60 x 30 mm of 1 mm disks, a short settling, a large time
+# shift: about 0.15 s) for the tests that compare two runs with each other
+# and need no physics of the full test.
+TINY = dict(gradation=2, seed=1, width_mm=60, height_mm=30, disk_radius_mm=1, shift=1e5, settle_steps=300, threads=1)
+
+
+def as_args(options):
+    """The command line's arguments for the module's keywords."""
+    return [a for k, v in options.items() for a in ("--" + k.replace("_", "-"), str(v))]
+
+
 # summary.json's one shape, 2D and 3D (docs/summary.schema.json).
 SUMMARY_SCHEMA = json.loads((pathlib.Path(__file__).parents[2] / "docs" / "summary.schema.json").read_text())
 jsonschema.Draft202012Validator.check_schema(SUMMARY_SCHEMA)

@@ -4,11 +4,10 @@ import numpy
 import pytest
 
 import vrut
+from conftest import TINY
 
-# A tiny 2D run (60 x 30 mm of 1 mm disks, a short settling, a large time
-# shift: about 0.15 s): these tests compare two runs of the module with each
-# other, which any run can do, and need no physics of the full test.
-SMALL = dict(seed=1, width_mm=60, height_mm=30, disk_radius_mm=1, shift=1e5, settle_steps=300, threads=1)
+# These tests compare two runs of the module with each other: the tiny run serves.
+SMALL = {k: v for k, v in TINY.items() if k != "gradation"}
 # Mix 2# as docs/method.md section 2 tabulates it.
 SIEVES_MM = [19.0, 16.0, 13.2, 9.5, 4.75, 2.36]
 MIX2_PASSING = [100, 95, 84, 70, 48, 34]

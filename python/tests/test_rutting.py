@@ -12,17 +12,14 @@ import numpy
 import pytest
 
 import vrut
-from conftest import check_summary
+from conftest import TINY, as_args, check_summary
 
 # A short 2D run (a 100 mm section, about 3 s on one thread), one thread so
 # that runs compare bit for bit whatever the machine.
 SMALL = dict(gradation=2, seed=1, width_mm=100, threads=1)
 SMALL_ARGS = ["--gradation", "2", "--seed", "1", "--width-mm", "100", "--threads", "1"]
-# A tiny one (60 x 30 mm of 1 mm disks, a short settling, a large time shift:
-# about 0.15 s) where a test compares two runs with each other and needs no
-# physics of the full test.
-TINY = dict(gradation=2, seed=1, width_mm=60, height_mm=30, disk_radius_mm=1, shift=1e5, settle_steps=300, threads=1)
-TINY_ARGS = [a for k, v in TINY.items() for a in ("--" + k.replace("_", "-"), str(v))]
+# conftest.TINY where a test compares two runs with each other.
+TINY_ARGS = as_args(TINY)
 # What differs between two runs of one input: the clock, and what it gives.
 CLOCK = {"wall_seconds", "particle_steps_per_second"}
 
@@ -81,7 +78,7 @@ def test_a_3d_run_is_the_command_lines(cli, tmp_path):
     # a large time shift: the 3D path end to end, as the command line runs it.
     # 1#'s stones place in a fraction of a second here, 2#'s take seconds.
     small3 = dict(dim=3, gradation=1, width_mm=40, sphere_radius_mm=2, shift=2e5, settle_steps=300, seed=1, threads=1)
-    args = [a for k, v in small3.items() for a in ("--" + k.replace("_", "-"), str(v))]
+    args = as_args(small3)
     done, out = run_cli(cli, args, tmp_path)
     assert done.returncode == 0, done.stderr
     expected = json.loads((out / "summary.json").read_text())
